@@ -1,0 +1,60 @@
+// What an agent looks like: its sensors, actions and learning constants.
+// Defaults are the original library's (docs/algorithm.md lists them and why).
+#pragma once
+#include <cstdint>
+#include <vector>
+
+namespace verve {
+
+enum class RbfAllocation : std::uint8_t {
+    Dynamic = 0,  // an RBF is created where an observation lands far from all others
+    Full = 1,     // the whole resolution^n lattice of every discrete combination at creation
+};
+
+enum class CuriosityMode : std::uint8_t {
+    None = 0,
+    Novelty = 1,   // thesis: reward proportional to predicted uncertainty
+    Progress = 2,  // learning progress: reward for a falling prediction error
+};
+
+struct ContinuousSensor {
+    bool circular = false;  // the range wraps: -1 and 1 are the same point (angles)
+};
+
+struct AgentDescriptor {
+    std::vector<std::uint32_t> discreteSensors;       // number of values of each discrete sensor
+    std::vector<ContinuousSensor> continuousSensors;  // each reads a value in [-1, 1]
+    std::uint32_t resolution = 10;                    // RBFs across [-1, 1]; width sigma = 2 / resolution
+    std::uint32_t numActions = 2;
+    RbfAllocation allocation = RbfAllocation::Dynamic;
+
+    // Learning constants as time constants in seconds (thesis chapter 4).
+    float tauValue = 0.1f;        // critic learning rate eta = (1 - e^(-dt/tau)) / sum
+    float tauDiscount = 1.0f;     // gamma = e^(-dt/tau)
+    float tauEligibility = 0.1f;  // lambda = e^(-dt/tau)
+    float policyMultiplier = 5.0f;  // eta_policy = k * eta_value
+    float traceThreshold = 0.01f;   // traces below this are dropped
+    std::uint64_t seed = 1;
+
+    // Predictive model, planning and curiosity (thesis chapter 2 "Efficient learning", chapter 4).
+    bool planning = false;                     // learn a model and plan after each real step
+    float tauModel = 0.0f;                     // model learning time constant (0: rate 1)
+    std::uint32_t maxPlanningSteps = 10;       // cap on imagined steps per real step
+    float planningUncertaintyThreshold = 0.1f; // a plan stops once accumulated uncertainty exceeds it
+    CuriosityMode curiosity = CuriosityMode::None;
+    float curiosityFactor = 3.0f;              // curiosity reward = factor * uncertainty (or progress)
+
+    AgentDescriptor& addDiscreteSensor(std::uint32_t numValues) {
+        discreteSensors.push_back(numValues);
+        return *this;
+    }
+    AgentDescriptor& addContinuousSensor(bool circular = false) {
+        continuousSensors.push_back(ContinuousSensor{circular});
+        return *this;
+    }
+
+    // Throws verve::Error(InvalidArgument) naming the first bad field.
+    void validate() const;
+};
+
+}  // namespace verve

@@ -1,0 +1,48 @@
+// Everything an agent is, as plain data: what src/io writes to XML and reads back.
+// The core fills it (Agent::snapshot) and rebuilds from it (Agent(const AgentSnapshot&));
+// io knows nothing of the algorithm, only these fields.
+#pragma once
+#include <array>
+#include <cstdint>
+#include <vector>
+
+#include "verve/agent_descriptor.hpp"
+
+namespace verve {
+
+struct AgentSnapshot {
+    static constexpr std::uint32_t kFormatVersion = 1;
+
+    AgentDescriptor descriptor;
+    bool learning = true;
+
+    // Features (RBFs). Feature i belongs to discrete combination featureKeys[i] and is centred at
+    // centres[i * numContinuous ... + numContinuous) (no centre when there are no continuous sensors).
+    std::vector<std::uint64_t> featureKeys;
+    std::vector<float> centres;
+
+    // Learned parameters: featureCount rows of `stride` floats (critic, actor, model outputs).
+    std::uint32_t stride = 0;
+    std::vector<float> weights;
+
+    // Live eligibility traces: traceFeatures[j] with traceStride floats in traces (value, policy[A]).
+    std::uint32_t traceStride = 0;
+    std::vector<std::uint32_t> traceFeatures;
+    std::vector<float> traces;
+
+    // Short-term memory: the previous step, for the next TD error.
+    bool hasPrevious = false;
+    std::vector<std::uint32_t> previousFeatures;
+    std::vector<float> previousActivations;
+    std::uint32_t previousAction = 0;
+    std::vector<std::int32_t> previousDiscrete;   // previous observation (model input/targets)
+    std::vector<float> previousContinuous;
+
+    std::array<std::uint64_t, 4> rng{};  // generator state: same state, same future actions
+
+    // Running statistics worth keeping across a save.
+    std::uint64_t steps = 0;
+    float modelError = 0.0f;  // running mean squared prediction error
+};
+
+}  // namespace verve

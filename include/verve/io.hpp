@@ -1,0 +1,23 @@
+// Saving and loading agents as XML (src/io, pugixml). Saves to a path are atomic: a temporary
+// file is written, flushed and renamed over the target, so a crash leaves the old save intact.
+#pragma once
+#include <cstddef>
+#include <string>
+
+#include "verve/agent.hpp"
+
+namespace verve {
+
+struct SaveOptions {
+    bool includeTraces = true;  // eligibility traces and the previous step (resume mid-trial)
+};
+
+void saveAgent(const Agent& agent, const std::string& path, const SaveOptions& options = {});
+std::string saveAgentToString(const Agent& agent, const SaveOptions& options = {});
+
+// Throw Error(Io) when the file cannot be read, Error(Format) naming what is wrong for a corrupt
+// or truncated save, Error(Version) for a newer format.
+Agent loadAgent(const std::string& path);
+Agent loadAgentFromMemory(const char* data, std::size_t size);
+
+}  // namespace verve

@@ -1,0 +1,177 @@
+/*
+ * verve_c.h - the stable C ABI of Verve, an embeddable reinforcement-learning agent.
+ *
+ * C99, no C++ types: load libverve as a native plugin and call only what is declared here.
+ *
+ * Conventions
+ *  - Every function returns a verve_result (except verve_version, verve_last_error,
+ *    verve_result_name and verve_agent_desc_default). On failure nothing changed, and
+ *    verve_last_error() returns a message for the calling thread.
+ *  - No exception, abort or assert reaches the host on any input, NULL pointers included.
+ *  - Arrays are passed as pointer + count. Structs are plain and blittable.
+ *  - verve_agent_desc starts with struct_size: fill it with verve_agent_desc_default(), so a host
+ *    compiled against an older, smaller struct keeps working with a newer library.
+ *
+ * Thread rules
+ *  - One agent is used by one thread at a time. Different agents may be used concurrently.
+ *  - verve_last_error() is per thread.
+ *
+ * Ownership
+ *  - verve_agent_create / verve_agent_load / verve_agent_load_memory hand you an agent; free it
+ *    with verve_agent_destroy. Buffers you pass are only read (or written) during the call.
+ */
+#ifndef VERVE_C_H
+#define VERVE_C_H
+
+#include <stddef.h>
+#include <stdint.h>
+
+#define VERVE_VERSION_MAJOR 0
+#define VERVE_VERSION_MINOR 1
+#define VERVE_VERSION_PATCH 0
+/* (major << 16) | (minor << 8) | patch */
+#define VERVE_VERSION_NUMBER ((VERVE_VERSION_MAJOR << 16) | (VERVE_VERSION_MINOR << 8) | VERVE_VERSION_PATCH)
+
+#if defined(_WIN32)
+#  if defined(VERVE_BUILDING_LIBRARY)
+#    define VERVE_API __declspec(dllexport)
+#  else
+#    define VERVE_API __declspec(dllimport)
+#  endif
+#  define VERVE_CALL __cdecl
+#else
+#  define VERVE_API __attribute__((visibility("default")))
+#  define VERVE_CALL
+#endif
+
+#ifdef __cplusplus
+extern "C" {
+#endif
+
+typedef enum verve_result {
+    VERVE_OK = 0,
+    VERVE_ERROR_INVALID_ARGUMENT = 1, /* NULL pointer, wrong count, NaN/inf, out-of-range value */
+    VERVE_ERROR_INVALID_STATE = 2,    /* the call does not fit the agent's state */
+    VERVE_ERROR_IO = 3,               /* a file could not be read, written or renamed */
+    VERVE_ERROR_FORMAT = 4,           /* a save is corrupt, truncated or inconsistent */
+    VERVE_ERROR_VERSION = 5,          /* a save written by a newer format version */
+    VERVE_ERROR_OUT_OF_MEMORY = 6,
+    VERVE_ERROR_BUFFER_TOO_SMALL = 7, /* the required size was written to the size argument */
+    VERVE_ERROR_INTERNAL = 8
+} verve_result;
+
+typedef enum verve_rbf_allocation {
+    VERVE_RBF_DYNAMIC = 0, /* RBFs are created where observations land (default) */
+    VERVE_RBF_FULL = 1     /* the whole lattice is created up front */
+} verve_rbf_allocation;
+
+typedef enum verve_curiosity {
+    VERVE_CURIOSITY_NONE = 0,
+    VERVE_CURIOSITY_NOVELTY = 1, /* reward proportional to predicted uncertainty (thesis) */
+    VERVE_CURIOSITY_PROGRESS = 2 /* reward for falling prediction error (ignores pure noise) */
+} verve_curiosity;
+
+typedef enum verve_sensor_kind {
+    VERVE_SENSOR_DISCRETE = 0,
+    VERVE_SENSOR_CONTINUOUS = 1
+} verve_sensor_kind;
+
+#define VERVE_MAX_DISCRETE_SENSORS 16
+#define VERVE_MAX_CONTINUOUS_SENSORS 16
+
+typedef struct verve_agent verve_agent; /* opaque */
+
+typedef struct verve_agent_desc {
+    uint32_t struct_size; /* sizeof(verve_agent_desc), set by verve_agent_desc_default */
+
+    uint32_t num_discrete_sensors;
+    uint32_t discrete_sensor_values[VERVE_MAX_DISCRETE_SENSORS]; /* values per discrete sensor */
+    uint32_t num_continuous_sensors;
+    uint8_t continuous_sensor_circular[VERVE_MAX_CONTINUOUS_SENSORS]; /* 1: the range wraps */
+    uint32_t resolution;  /* RBFs across [-1, 1] per continuous sensor (default 10) */
+    uint32_t num_actions;
+    uint32_t rbf_allocation; /* verve_rbf_allocation */
+
+    float tau_value;          /* seconds (default 0.1) */
+    float tau_discount;       /* seconds (default 1.0) */
+    float tau_eligibility;    /* seconds (default 0.1) */
+    float policy_multiplier;  /* default 5 */
+    float trace_threshold;    /* default 0.01 */
+    uint64_t seed;
+
+    uint32_t planning;                     /* 0 or 1 */
+    float tau_model;                       /* seconds (default 0: learning rate 1) */
+    uint32_t max_planning_steps;           /* default 10 */
+    float planning_uncertainty_threshold;  /* default 0.1 */
+    uint32_t curiosity;                    /* verve_curiosity */
+    float curiosity_factor;                /* default 3 */
+} verve_agent_desc;
+
+typedef struct verve_agent_stats {
+    uint32_t struct_size;           /* set by the caller to sizeof(verve_agent_stats) */
+    uint64_t steps;                 /* real updates since creation */
+    uint32_t rbf_count;
+    uint32_t live_traces;
+    float value;                    /* V(s) of the latest observation */
+    float td_error;                 /* TD error of the latest real step */
+    float model_error;              /* running mean squared prediction error */
+    float predicted_uncertainty;
+    uint32_t planning_steps;        /* imagined steps after the latest real step */
+    float curiosity_reward;         /* summed over the latest plan */
+} verve_agent_stats;
+
+typedef struct verve_value_axis {
+    uint32_t kind;    /* verve_sensor_kind */
+    uint32_t index;   /* which sensor of that kind */
+    uint32_t samples; /* continuous: points from -1 to 1; discrete: the sensor's value count */
+} verve_value_axis;
+
+/* ---- library ---------------------------------------------------------------------------- */
+VERVE_API uint32_t VERVE_CALL verve_version(void); /* VERVE_VERSION_NUMBER of the loaded library */
+VERVE_API const char* VERVE_CALL verve_last_error(void); /* never NULL; "" after success */
+VERVE_API const char* VERVE_CALL verve_result_name(verve_result result);
+
+/* ---- agents ----------------------------------------------------------------------------- */
+VERVE_API void VERVE_CALL verve_agent_desc_default(verve_agent_desc* desc);
+VERVE_API verve_result VERVE_CALL verve_agent_create(const verve_agent_desc* desc, verve_agent** out);
+VERVE_API void VERVE_CALL verve_agent_destroy(verve_agent* agent); /* NULL is ignored */
+
+/* One step. reward: what the previous action earned (clamped to [-1, 1]). Continuous values
+ * outside [-1, 1] are clamped (wrapped when circular); NaN/inf, a wrong count, an out-of-range
+ * discrete value or dt <= 0 are refused and change nothing. */
+VERVE_API verve_result VERVE_CALL verve_agent_update(verve_agent* agent, float reward,
+    const int32_t* discrete, uint32_t n_discrete, const float* continuous, uint32_t n_continuous,
+    float dt, uint32_t* out_action);
+/* Ends a trial with a terminal reward (nothing is bootstrapped past it). */
+VERVE_API verve_result VERVE_CALL verve_agent_end_episode(verve_agent* agent, float final_reward);
+VERVE_API verve_result VERVE_CALL verve_agent_reset_short_term_memory(verve_agent* agent);
+VERVE_API verve_result VERVE_CALL verve_agent_set_learning(verve_agent* agent, int enabled);
+VERVE_API verve_result VERVE_CALL verve_agent_get_learning(const verve_agent* agent, int* out_enabled);
+VERVE_API verve_result VERVE_CALL verve_agent_get_desc(const verve_agent* agent, verve_agent_desc* out);
+
+/* ---- read-outs -------------------------------------------------------------------------- */
+VERVE_API verve_result VERVE_CALL verve_agent_get_value(const verve_agent* agent, float* out_value);
+VERVE_API verve_result VERVE_CALL verve_agent_get_td_error(const verve_agent* agent, float* out_td_error);
+VERVE_API verve_result VERVE_CALL verve_agent_get_rbf_count(const verve_agent* agent, uint32_t* out_count);
+VERVE_API verve_result VERVE_CALL verve_agent_get_stats(const verve_agent* agent, verve_agent_stats* out);
+/* V sampled over 1 or 2 swept sensors, the other sensors held at the base observation.
+ * Writes axes[0].samples (* axes[1].samples) floats to out, axis 0 fastest. */
+VERVE_API verve_result VERVE_CALL verve_agent_sample_values(const verve_agent* agent,
+    const verve_value_axis* axes, uint32_t n_axes,
+    const int32_t* base_discrete, uint32_t n_discrete, const float* base_continuous, uint32_t n_continuous,
+    float* out, uint32_t out_count);
+
+/* ---- persistence (XML) ------------------------------------------------------------------ */
+/* Atomic: written to a temporary file, flushed and renamed, so the previous save survives a crash. */
+VERVE_API verve_result VERVE_CALL verve_agent_save(const verve_agent* agent, const char* path);
+VERVE_API verve_result VERVE_CALL verve_agent_load(const char* path, verve_agent** out);
+/* To memory: call with buffer NULL (or too small) to get the size needed in *size
+ * (VERVE_ERROR_BUFFER_TOO_SMALL when buffer was non-NULL); then call again with a buffer. */
+VERVE_API verve_result VERVE_CALL verve_agent_save_memory(const verve_agent* agent, void* buffer, size_t* size);
+VERVE_API verve_result VERVE_CALL verve_agent_load_memory(const void* data, size_t size, verve_agent** out);
+
+#ifdef __cplusplus
+}
+#endif
+
+#endif /* VERVE_C_H */
