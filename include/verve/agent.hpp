@@ -74,8 +74,9 @@ public:
 
     AgentSnapshot snapshot() const;
 
+    struct Impl;  // internal (src/core/agent_impl.hpp)
+
 private:
-    struct Impl;
     std::unique_ptr<Impl> impl_;
 };
 

@@ -37,6 +37,7 @@ struct AgentSnapshot {
     std::uint32_t previousAction = 0;
     std::vector<std::int32_t> previousDiscrete;   // previous observation (model input/targets)
     std::vector<float> previousContinuous;
+    float lastDt = 0.1f;  // dt of the latest update (the duration of a terminal transition)
 
     std::array<std::uint64_t, 4> rng{};  // generator state: same state, same future actions
 

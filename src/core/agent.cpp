@@ -1,0 +1,128 @@
+#include <algorithm>
+#include <cmath>
+#include <utility>
+
+#include "core/agent_impl.hpp"
+#include "core/observation_check.hpp"
+
+namespace verve {
+namespace {
+
+float rateFromTimeConstant(float dt, float tau) {
+    return tau > 0.0f ? 1.0f - std::exp(-dt / tau) : 1.0f;  // tau 0: learn at once
+}
+
+float decayFromTimeConstant(float dt, float tau) { return tau > 0.0f ? std::exp(-dt / tau) : 0.0f; }
+
+}  // namespace
+
+core::WeightLayout weightLayoutFor(const AgentDescriptor& desc) {
+    core::WeightLayout layout;
+    layout.numActions = desc.numActions;
+    return layout;
+}
+
+Agent::Impl::Impl(const AgentDescriptor& d)
+    : desc((d.validate(), d)),
+      rep(desc),
+      weights(weightLayoutFor(desc)),
+      td(desc.numActions, desc.traceThreshold),
+      rng(desc.seed) {
+    weights.resize(rep.featureCount());
+    previousDiscrete.assign(desc.discreteSensors.size(), 0);
+    previousContinuous.assign(desc.continuousSensors.size(), 0.0f);
+    stats.rbfCount = rep.featureCount();
+}
+
+StepConstants Agent::Impl::constantsFor(float dt) const {
+    StepConstants k;
+    k.gamma = decayFromTimeConstant(dt, desc.tauDiscount);
+    k.traceDecay = k.gamma * decayFromTimeConstant(dt, desc.tauEligibility);
+    k.rates.value = rateFromTimeConstant(dt, desc.tauValue) / rep.activationSum();
+    k.rates.policy = desc.policyMultiplier * k.rates.value;
+    return k;
+}
+
+void Agent::Impl::resetShortTermMemory() {
+    td.clear();
+    hasPrevious = false;
+    previous.clear();
+    stats.liveTraces = 0;
+}
+
+Agent::Agent(const AgentDescriptor& descriptor) : impl_(std::make_unique<Impl>(descriptor)) {}
+Agent::~Agent() = default;
+Agent::Agent(Agent&&) noexcept = default;
+Agent& Agent::operator=(Agent&&) noexcept = default;
+
+std::uint32_t Agent::update(float reward, const Observation& obs, float dt) { return update(reward, obs.view(), dt); }
+
+std::uint32_t Agent::update(float reward, ObservationView obs, float dt) {
+    Impl& s = *impl_;
+    // Everything is checked before anything changes.
+    core::checkObservation(s.desc, obs, s.normalized);
+    core::checkFinite(reward, "reward");
+    core::checkTimeStep(dt);
+    const float r = std::clamp(reward, -1.0f, 1.0f);
+    s.lastDt = dt;
+
+    const bool allocate = s.learning && s.desc.allocation == RbfAllocation::Dynamic;
+    if (s.rep.activate(obs.discrete, s.normalized.data(), allocate, s.current) > 0) {
+        s.weights.resize(s.rep.featureCount());
+    }
+
+    if (s.learning && s.hasPrevious) {
+        const StepConstants k = s.constantsFor(dt);
+        const float delta = r + k.gamma * s.td.value(s.weights, s.current) - s.td.value(s.weights, s.previous);
+        s.td.train(s.weights, delta, k.rates);
+        s.td.decay(k.traceDecay);
+        s.stats.tdError = delta;
+    }
+
+    const std::uint32_t action = s.td.chooseAction(s.weights, s.current, s.rng, s.activations);
+    if (s.learning) s.td.mark(s.current, action, s.rep.featureCount());
+
+    std::swap(s.previous, s.current);
+    s.previousAction = action;
+    s.previousDiscrete.assign(obs.discrete, obs.discrete + obs.numDiscrete);
+    s.previousContinuous = s.normalized;
+    s.hasPrevious = true;
+
+    ++s.stats.steps;
+    s.stats.value = s.td.value(s.weights, s.previous);
+    s.stats.rbfCount = s.rep.featureCount();
+    s.stats.liveTraces = s.td.liveCount();
+    return action;
+}
+
+void Agent::endEpisode(float finalReward) {
+    Impl& s = *impl_;
+    core::checkFinite(finalReward, "final reward");
+    const float r = std::clamp(finalReward, -1.0f, 1.0f);
+    if (s.learning && s.hasPrevious) {
+        // Terminal: nothing lies beyond, so no value is bootstrapped (delta = r - V(s)).
+        // The transition lasted as long as the step that chose its action: the last dt.
+        const float delta = r - s.td.value(s.weights, s.previous);
+        s.td.train(s.weights, delta, s.constantsFor(s.lastDt).rates);
+        s.stats.tdError = delta;
+    }
+    s.resetShortTermMemory();
+}
+
+void Agent::resetShortTermMemory() { impl_->resetShortTermMemory(); }
+
+void Agent::setLearning(bool enabled) {
+    if (impl_->learning == enabled) return;
+    impl_->learning = enabled;
+    // Traces from before the switch belong to no TD error that will follow it.
+    impl_->resetShortTermMemory();
+}
+
+bool Agent::learning() const { return impl_->learning; }
+const AgentDescriptor& Agent::descriptor() const { return impl_->desc; }
+AgentStats Agent::stats() const { return impl_->stats; }
+float Agent::valueEstimate() const { return impl_->stats.value; }
+float Agent::tdError() const { return impl_->stats.tdError; }
+std::size_t Agent::rbfCount() const { return impl_->rep.featureCount(); }
+
+}  // namespace verve

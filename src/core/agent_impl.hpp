@@ -1,0 +1,53 @@
+// The agent's internals, shared by the files that implement verve::Agent
+// (agent.cpp: stepping; agent_snapshot.cpp: snapshot and restore; value_sampling.cpp).
+#pragma once
+#include <cstdint>
+#include <vector>
+
+#include "core/rng.hpp"
+#include "core/state_representation.hpp"
+#include "core/td_learner.hpp"
+#include "core/weight_table.hpp"
+#include "verve/agent.hpp"
+
+namespace verve {
+
+// Per-step constants from dt and the time constants (thesis chapter 4).
+struct StepConstants {
+    float gamma = 0.0f;        // e^(-dt / tau_discount)
+    float traceDecay = 0.0f;   // gamma * lambda, lambda = e^(-dt / tau_eligibility)
+    core::TdRates rates;       // (1 - e^(-dt / tau_value)) / sum, times k for the policy
+};
+
+struct Agent::Impl {
+    explicit Impl(const AgentDescriptor& desc);
+
+    StepConstants constantsFor(float dt) const;
+    void resetShortTermMemory();
+
+    AgentDescriptor desc;
+    core::StateRepresentation rep;
+    core::WeightTable weights;
+    core::TdLearner td;
+    core::Rng rng;
+    bool learning = true;
+
+    // Short-term memory: the previous step.
+    bool hasPrevious = false;
+    std::vector<core::ActiveFeature> previous;
+    std::uint32_t previousAction = 0;
+    std::vector<std::int32_t> previousDiscrete;
+    std::vector<float> previousContinuous;
+    float lastDt = 0.1f;  // dt of the latest update: the duration of a terminal transition
+
+    AgentStats stats;
+
+    // Scratch reused on every update (no allocation once warmed up).
+    std::vector<core::ActiveFeature> current;
+    std::vector<float> normalized;
+    std::vector<float> activations;
+};
+
+core::WeightLayout weightLayoutFor(const AgentDescriptor& desc);
+
+}  // namespace verve

@@ -1,0 +1,142 @@
+// Agent <-> AgentSnapshot. Restoring validates every field, so a corrupt save can never build an
+// agent that reads out of bounds or carries NaN weights.
+#include <cmath>
+#include <string>
+
+#include "core/agent_impl.hpp"
+
+namespace verve {
+namespace {
+
+[[noreturn]] void corrupt(const std::string& message) { throw Error(ErrorCode::Format, "invalid agent data: " + message); }
+
+void requireFinite(const std::vector<float>& values, const char* what) {
+    for (std::size_t i = 0; i < values.size(); ++i) {
+        if (!std::isfinite(values[i])) corrupt(std::string(what) + " value " + std::to_string(i) + " is not finite");
+    }
+}
+
+void requireSize(std::size_t actual, std::size_t expected, const char* what) {
+    if (actual != expected) {
+        corrupt(std::string(what) + " has " + std::to_string(actual) + " values, expected " + std::to_string(expected));
+    }
+}
+
+std::unique_ptr<Agent::Impl> restore(const AgentSnapshot& snap) {
+    AgentDescriptor desc = snap.descriptor;
+    // Saved features are restored one by one, whatever the allocation mode.
+    desc.allocation = RbfAllocation::Dynamic;
+    try {
+        desc.validate();
+    } catch (const Error& e) {
+        corrupt(e.what());
+    }
+    auto impl = std::make_unique<Agent::Impl>(desc);
+    impl->desc.allocation = snap.descriptor.allocation;
+    Agent::Impl& s = *impl;
+
+    const std::size_t count = snap.featureKeys.size();
+    const std::uint32_t nc = s.rep.numContinuous();
+    requireSize(snap.centres.size(), count * nc, "RBF centres");
+    requireFinite(snap.centres, "RBF centre");
+    if (snap.stride != s.weights.stride()) {
+        corrupt("weight stride is " + std::to_string(snap.stride) + ", the descriptor needs " + std::to_string(s.weights.stride()));
+    }
+    requireSize(snap.weights.size(), count * s.weights.stride(), "weights");
+    requireFinite(snap.weights, "weight");
+    for (std::size_t i = 0; i < count; ++i) {
+        if (snap.featureKeys[i] >= s.rep.keyCount()) corrupt("feature " + std::to_string(i) + " has an out-of-range discrete key");
+        for (std::uint32_t d = 0; d < nc; ++d) {
+            const float c = snap.centres[i * nc + d];
+            if (c < -1.0f || c > 1.0f) corrupt("RBF centre of feature " + std::to_string(i) + " lies outside [-1, 1]");
+        }
+        s.rep.addFeature(snap.featureKeys[i], snap.centres.data() + i * nc);
+    }
+    s.weights.resize(static_cast<std::uint32_t>(count));
+    s.weights.data() = snap.weights;
+
+    // Traces: optional (an empty list restores none).
+    if (!snap.traceFeatures.empty() || !snap.traces.empty()) {
+        if (snap.traceStride != s.td.traceStride()) corrupt("trace stride does not match the number of actions");
+        requireSize(snap.traces.size(), snap.traceFeatures.size() * s.td.traceStride(), "traces");
+        requireFinite(snap.traces, "trace");
+        std::vector<bool> seen(count, false);
+        for (auto f : snap.traceFeatures) {
+            if (f >= count || seen[f]) corrupt("trace list names feature " + std::to_string(f) + " twice or out of range");
+            seen[f] = true;
+        }
+        s.td.restore(snap.traceFeatures, snap.traces, static_cast<std::uint32_t>(count));
+    }
+
+    s.hasPrevious = snap.hasPrevious;
+    if (snap.hasPrevious) {
+        requireSize(snap.previousActivations.size(), snap.previousFeatures.size(), "previous activations");
+        requireFinite(snap.previousActivations, "previous activation");
+        for (std::size_t i = 0; i < snap.previousFeatures.size(); ++i) {
+            if (snap.previousFeatures[i] >= count) corrupt("previous step names a feature out of range");
+            s.previous.push_back(core::ActiveFeature{snap.previousFeatures[i], snap.previousActivations[i]});
+        }
+        if (snap.previousAction >= desc.numActions) corrupt("previous action out of range");
+        s.previousAction = snap.previousAction;
+        requireSize(snap.previousDiscrete.size(), desc.discreteSensors.size(), "previous discrete observation");
+        requireSize(snap.previousContinuous.size(), desc.continuousSensors.size(), "previous continuous observation");
+        for (std::size_t i = 0; i < snap.previousDiscrete.size(); ++i) {
+            const auto v = snap.previousDiscrete[i];
+            if (v < 0 || static_cast<std::uint32_t>(v) >= desc.discreteSensors[i]) corrupt("previous discrete value out of range");
+        }
+        requireFinite(snap.previousContinuous, "previous continuous observation");
+        s.previousDiscrete = snap.previousDiscrete;
+        s.previousContinuous = snap.previousContinuous;
+    }
+    if (!std::isfinite(snap.lastDt) || snap.lastDt <= 0.0f) corrupt("last dt must be finite and > 0");
+    s.lastDt = snap.lastDt;
+    if (snap.rng[0] == 0 && snap.rng[1] == 0 && snap.rng[2] == 0 && snap.rng[3] == 0) corrupt("random generator state is all zero");
+    s.rng.setState(snap.rng);
+    s.learning = snap.learning;
+    if (!std::isfinite(snap.modelError) || snap.modelError < 0.0f) corrupt("model error must be finite and >= 0");
+    s.stats.steps = snap.steps;
+    s.stats.modelError = snap.modelError;
+    s.stats.rbfCount = s.rep.featureCount();
+    s.stats.liveTraces = s.td.liveCount();
+    s.stats.value = s.hasPrevious ? s.td.value(s.weights, s.previous) : 0.0f;
+    return impl;
+}
+
+}  // namespace
+
+Agent::Agent(const AgentSnapshot& snapshot) : impl_(restore(snapshot)) {}
+
+AgentSnapshot Agent::snapshot() const {
+    const Impl& s = *impl_;
+    AgentSnapshot snap;
+    snap.descriptor = s.desc;
+    snap.learning = s.learning;
+    const std::uint32_t count = s.rep.featureCount();
+    const std::uint32_t nc = s.rep.numContinuous();
+    snap.featureKeys.reserve(count);
+    snap.centres.reserve(std::size_t(count) * nc);
+    for (std::uint32_t i = 0; i < count; ++i) {
+        snap.featureKeys.push_back(s.rep.featureKey(i));
+        snap.centres.insert(snap.centres.end(), s.rep.centre(i), s.rep.centre(i) + nc);
+    }
+    snap.stride = s.weights.stride();
+    snap.weights = s.weights.data();
+    snap.traceStride = s.td.traceStride();
+    snap.traceFeatures = s.td.liveFeatures();
+    snap.traces = s.td.liveTraces();
+    snap.hasPrevious = s.hasPrevious;
+    for (const auto& f : s.previous) {
+        snap.previousFeatures.push_back(f.index);
+        snap.previousActivations.push_back(f.activation);
+    }
+    snap.previousAction = s.previousAction;
+    snap.previousDiscrete = s.previousDiscrete;
+    snap.previousContinuous = s.previousContinuous;
+    snap.lastDt = s.lastDt;
+    snap.rng = s.rng.state();
+    snap.steps = s.stats.steps;
+    snap.modelError = s.stats.modelError;
+    return snap;
+}
+
+}  // namespace verve

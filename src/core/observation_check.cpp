@@ -1,0 +1,60 @@
+#include "core/observation_check.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <string>
+
+#include "verve/error.hpp"
+
+namespace verve::core {
+namespace {
+
+[[noreturn]] void refuse(const std::string& message) { throw Error(ErrorCode::InvalidArgument, message); }
+
+}  // namespace
+
+void checkFinite(float value, const char* what) {
+    if (!std::isfinite(value)) refuse(std::string(what) + " must be finite, got " + std::to_string(value));
+}
+
+void checkTimeStep(float dt) {
+    if (!std::isfinite(dt) || dt <= 0.0f) refuse("dt must be a finite number > 0, got " + std::to_string(dt));
+}
+
+void checkObservation(const AgentDescriptor& desc, ObservationView obs, std::vector<float>& normalized) {
+    const auto nd = desc.discreteSensors.size();
+    const auto nc = desc.continuousSensors.size();
+    if (obs.numDiscrete != nd) {
+        refuse("observation has " + std::to_string(obs.numDiscrete) + " discrete values, the agent has " +
+               std::to_string(nd) + " discrete sensors");
+    }
+    if (obs.numContinuous != nc) {
+        refuse("observation has " + std::to_string(obs.numContinuous) + " continuous values, the agent has " +
+               std::to_string(nc) + " continuous sensors");
+    }
+    if ((nd > 0 && obs.discrete == nullptr) || (nc > 0 && obs.continuous == nullptr)) {
+        refuse("observation values are NULL");
+    }
+    for (std::size_t i = 0; i < nd; ++i) {
+        const std::int32_t v = obs.discrete[i];
+        if (v < 0 || static_cast<std::uint32_t>(v) >= desc.discreteSensors[i]) {
+            refuse("discrete sensor " + std::to_string(i) + " reads " + std::to_string(v) + ", valid values are 0.." +
+                   std::to_string(desc.discreteSensors[i] - 1));
+        }
+    }
+    normalized.resize(nc);
+    for (std::size_t i = 0; i < nc; ++i) {
+        float v = obs.continuous[i];
+        if (!std::isfinite(v)) refuse("continuous sensor " + std::to_string(i) + " reads " + std::to_string(v) + ", values must be finite");
+        if (desc.continuousSensors[i].circular) {
+            v = std::fmod(v + 1.0f, 2.0f);  // wrap into [-1, 1)
+            if (v < 0.0f) v += 2.0f;
+            v -= 1.0f;
+        } else {
+            v = std::clamp(v, -1.0f, 1.0f);
+        }
+        normalized[i] = v;
+    }
+}
+
+}  // namespace verve::core

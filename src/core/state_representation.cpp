@@ -1,0 +1,174 @@
+#include "core/state_representation.hpp"
+
+#include <algorithm>
+#include <cmath>
+
+#include "verve/error.hpp"
+
+namespace verve::core {
+namespace {
+
+constexpr float kCutoffWidths = 4.0f;            // activations beyond 4 sigma count as zero
+constexpr std::uint64_t kMaxFullFeatures = 20000000;  // refuse absurd full lattices
+
+std::uint64_t mix(std::uint64_t h, std::uint64_t v) {
+    h ^= v + 0x9e3779b97f4a7c15ULL + (h << 6) + (h >> 2);
+    return h * 0xff51afd7ed558ccdULL;
+}
+
+}  // namespace
+
+StateRepresentation::StateRepresentation(const AgentDescriptor& desc)
+    : discreteCounts_(desc.discreteSensors),
+      numContinuous_(static_cast<std::uint32_t>(desc.continuousSensors.size())),
+      resolution_(desc.resolution),
+      sigma_(2.0f / static_cast<float>(std::max<std::uint32_t>(desc.resolution, 1))),
+      // Cells at least 4 sigma wide that tile [-1, 1] exactly, so that the neighbours of a cell
+      // hold every RBF within the cutoff, also across the seam of a circular sensor.
+      cellsPerDim_(std::max<std::int32_t>(1, static_cast<std::int32_t>(desc.resolution / 4))),
+      cellSize_(2.0f / static_cast<float>(cellsPerDim_)),
+      keyCount_(1),
+      activationSum_(1.0f) {
+    for (const auto& s : desc.continuousSensors) circular_.push_back(s.circular);
+    for (auto c : discreteCounts_) keyCount_ *= c;
+    activationSum_ = std::pow(2.5f, static_cast<float>(numContinuous_));
+    coords_.resize(numContinuous_);
+    neighbour_.resize(numContinuous_);
+    offsets_.resize(numContinuous_);
+    candidates_.resize(std::size_t(numContinuous_) * 3);
+    candidateCount_.resize(numContinuous_);
+    if (desc.allocation == RbfAllocation::Full) allocateFullLattice();
+}
+
+std::uint64_t StateRepresentation::discreteKey(const std::int32_t* discrete) const {
+    std::uint64_t key = 0;
+    for (std::size_t i = 0; i < discreteCounts_.size(); ++i) {
+        key = key * discreteCounts_[i] + static_cast<std::uint64_t>(discrete[i]);
+    }
+    return key;
+}
+
+void StateRepresentation::cellCoords(const float* point, std::int32_t* coords) const {
+    for (std::uint32_t d = 0; d < numContinuous_; ++d) {
+        auto c = static_cast<std::int32_t>(std::floor((point[d] + 1.0f) / cellSize_));
+        coords[d] = std::clamp(c, 0, cellsPerDim_ - 1);
+    }
+}
+
+std::uint64_t StateRepresentation::cellHash(const std::int32_t* coords) const {
+    // Distinct cells may collide: that only adds candidates, which the distance test rejects.
+    std::uint64_t h = 0x2545f4914f6cdd1dULL;
+    for (std::uint32_t d = 0; d < numContinuous_; ++d) h = mix(h, static_cast<std::uint32_t>(coords[d]));
+    return h;
+}
+
+float StateRepresentation::squaredDistance(const float* a, const float* b) const {
+    float sum = 0.0f;
+    for (std::uint32_t d = 0; d < numContinuous_; ++d) {
+        float diff = a[d] - b[d];
+        if (circular_[d]) {  // the shorter way round: -1 and 1 are the same point
+            if (diff > 1.0f) diff -= 2.0f;
+            else if (diff < -1.0f) diff += 2.0f;
+        }
+        sum += diff * diff;
+    }
+    return sum;
+}
+
+std::uint32_t StateRepresentation::addFeature(std::uint64_t key, const float* centre) {
+    const auto index = static_cast<std::uint32_t>(keys_.size());
+    keys_.push_back(key);
+    centres_.insert(centres_.end(), centre, centre + numContinuous_);
+    cellCoords(centre, coords_.data());
+    arrays_[key].cells[cellHash(coords_.data())].push_back(index);
+    return index;
+}
+
+void StateRepresentation::allocateFullLattice() {
+    const double perArray = std::pow(static_cast<double>(resolution_), numContinuous_);
+    if (perArray * static_cast<double>(keyCount_) > static_cast<double>(kMaxFullFeatures)) {
+        throw Error(ErrorCode::InvalidArgument,
+                    "invalid agent descriptor: full RBF allocation would create more than 20 million "
+                    "features; use dynamic allocation");
+    }
+    // Lattice centres sit in the middle of resolution equal cells: -1 + (i + 0.5) * sigma.
+    std::vector<std::uint32_t> index(numContinuous_, 0);
+    std::vector<float> centre(numContinuous_);
+    const auto latticeSize = static_cast<std::uint64_t>(perArray);
+    for (std::uint64_t key = 0; key < keyCount_; ++key) {
+        std::fill(index.begin(), index.end(), 0u);
+        for (std::uint64_t n = 0; n < latticeSize; ++n) {
+            for (std::uint32_t d = 0; d < numContinuous_; ++d) {
+                centre[d] = -1.0f + (static_cast<float>(index[d]) + 0.5f) * sigma_;
+            }
+            addFeature(key, centre.data());
+            for (std::uint32_t d = 0; d < numContinuous_; ++d) {  // odometer
+                if (++index[d] < resolution_) break;
+                index[d] = 0;
+            }
+        }
+    }
+}
+
+std::uint32_t StateRepresentation::activate(const std::int32_t* discrete, const float* continuous,
+                                            bool allocate, std::vector<ActiveFeature>& out) {
+    if (find(discrete, continuous, out) || !allocate) return 0;
+    out.push_back(ActiveFeature{addFeature(discreteKey(discrete), continuous), 1.0f});
+    return 1;
+}
+
+bool StateRepresentation::find(const std::int32_t* discrete, const float* continuous,
+                               std::vector<ActiveFeature>& out) const {
+    out.clear();
+    const std::uint64_t key = discreteKey(discrete);
+    auto arrayIt = arrays_.find(key);
+    const float cutoff2 = kCutoffWidths * kCutoffWidths * sigma_ * sigma_;
+    const float sigma2 = sigma_ * sigma_;
+    const float inv2Sigma2 = 1.0f / (2.0f * sigma2);
+    bool nearOne = false;
+
+    if (arrayIt != arrays_.end()) {
+        // Distinct neighbouring cell coordinates per dimension (wrapping on circular sensors).
+        cellCoords(continuous, coords_.data());
+        for (std::uint32_t d = 0; d < numContinuous_; ++d) {
+            std::uint8_t n = 0;
+            for (int off = -1; off <= 1; ++off) {
+                std::int32_t c = coords_[d] + off;
+                if (circular_[d]) c = (c % cellsPerDim_ + cellsPerDim_) % cellsPerDim_;
+                else if (c < 0 || c >= cellsPerDim_) continue;
+                bool seen = false;
+                for (std::uint8_t k = 0; k < n; ++k) seen |= candidates_[d * 3 + k] == c;
+                if (!seen) candidates_[d * 3 + n++] = c;
+            }
+            candidateCount_[d] = n;
+            offsets_[d] = 0;
+        }
+        const auto& cells = arrayIt->second.cells;
+        visited_.clear();
+        while (true) {
+            for (std::uint32_t d = 0; d < numContinuous_; ++d) neighbour_[d] = candidates_[d * 3 + offsets_[d]];
+            const std::uint64_t hash = cellHash(neighbour_.data());
+            auto cell = cells.find(hash);
+            // Two neighbour cells whose hashes collide share one list: visit it once.
+            if (cell != cells.end() &&
+                std::find(visited_.begin(), visited_.end(), hash) == visited_.end()) {
+                visited_.push_back(hash);
+                for (std::uint32_t feature : cell->second) {
+                    const float d2 = squaredDistance(continuous, centre(feature));
+                    if (d2 >= cutoff2) continue;
+                    nearOne |= d2 < sigma2;
+                    out.push_back(ActiveFeature{feature, std::exp(-d2 * inv2Sigma2)});
+                }
+            }
+            std::uint32_t d = 0;
+            for (; d < numContinuous_; ++d) {  // odometer over the neighbour cells
+                if (++offsets_[d] < candidateCount_[d]) break;
+                offsets_[d] = 0;
+            }
+            if (d == numContinuous_) break;
+        }
+    }
+    return nearOne;
+}
+
+}  // namespace verve::core

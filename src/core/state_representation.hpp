@@ -1,0 +1,80 @@
+// The RBF state representation (thesis chapter 4, "RBF State Representation").
+//
+// One RBF array per combination of discrete sensor values; within an array, Gaussian RBFs of width
+// sigma = 2 / resolution over the continuous sensors in [-1, 1]. With no continuous sensors an
+// array is a single feature that is fully active for its combination. RBFs are found through a
+// uniform grid of cells 4 sigma wide, so activating an observation touches only the cells around
+// it, never all RBFs ever made.
+#pragma once
+#include <cstdint>
+#include <unordered_map>
+#include <vector>
+
+#include "verve/agent_descriptor.hpp"
+
+namespace verve::core {
+
+struct ActiveFeature {
+    std::uint32_t index;
+    float activation;  // in (0, 1]
+};
+
+class StateRepresentation {
+public:
+    explicit StateRepresentation(const AgentDescriptor& desc);
+
+    // Active features of an observation whose continuous values are already in [-1, 1].
+    // With `allocate`, a new RBF is centred on the input when none lies within one width.
+    // Returns the number of features added (0 or 1).
+    std::uint32_t activate(const std::int32_t* discrete, const float* continuous, bool allocate,
+                           std::vector<ActiveFeature>& out);
+    // The same without allocating; returns whether some RBF lies within one width.
+    bool find(const std::int32_t* discrete, const float* continuous, std::vector<ActiveFeature>& out) const;
+
+    std::uint32_t featureCount() const { return static_cast<std::uint32_t>(keys_.size()); }
+    std::uint32_t numContinuous() const { return numContinuous_; }
+    std::uint64_t keyCount() const { return keyCount_; }
+    std::uint64_t featureKey(std::uint32_t feature) const { return keys_[feature]; }
+    const float* centre(std::uint32_t feature) const { return centres_.data() + std::size_t(feature) * numContinuous_; }
+
+    // Divides the learning rates: the expected activation sum of a lattice of RBFs,
+    // sqrt(2 pi) ~ 2.5 per continuous dimension, and 1 when all sensors are discrete.
+    float activationSum() const { return activationSum_; }
+
+    // Restores a saved feature (centre has numContinuous values, already validated).
+    std::uint32_t addFeature(std::uint64_t key, const float* centre);
+
+private:
+    struct Array {
+        std::unordered_map<std::uint64_t, std::vector<std::uint32_t>> cells;
+    };
+
+    std::uint64_t discreteKey(const std::int32_t* discrete) const;
+    void cellCoords(const float* point, std::int32_t* coords) const;
+    std::uint64_t cellHash(const std::int32_t* coords) const;
+    float squaredDistance(const float* a, const float* b) const;
+    void allocateFullLattice();
+
+    std::vector<std::uint32_t> discreteCounts_;
+    std::vector<bool> circular_;
+    std::uint32_t numContinuous_;
+    std::uint32_t resolution_;
+    float sigma_;
+    std::int32_t cellsPerDim_;
+    float cellSize_;
+    std::uint64_t keyCount_;
+    float activationSum_;
+
+    std::unordered_map<std::uint64_t, Array> arrays_;
+    std::vector<std::uint64_t> keys_;  // per feature: its discrete combination
+    std::vector<float> centres_;       // per feature: numContinuous_ values
+
+    // Scratch for neighbour enumeration (no allocation once warmed up). Mutable: lookups are
+    // logically const, and one agent is used by one thread at a time.
+    mutable std::vector<std::int32_t> coords_, neighbour_, offsets_;
+    mutable std::vector<std::int32_t> candidates_;  // per dimension up to 3 distinct cell coordinates
+    mutable std::vector<std::uint8_t> candidateCount_;
+    mutable std::vector<std::uint64_t> visited_;  // cell hashes already read this activation
+};
+
+}  // namespace verve::core

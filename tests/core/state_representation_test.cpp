@@ -1,0 +1,161 @@
+#include "core/state_representation.hpp"
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <vector>
+
+#include "core/rng.hpp"
+
+using verve::AgentDescriptor;
+using verve::core::ActiveFeature;
+using verve::core::StateRepresentation;
+
+namespace {
+
+AgentDescriptor continuous1D(std::uint32_t resolution, bool circular = false) {
+    AgentDescriptor d;
+    d.addContinuousSensor(circular);
+    d.resolution = resolution;
+    return d;
+}
+
+float activationOf(const std::vector<ActiveFeature>& phi, std::uint32_t index) {
+    for (const auto& f : phi) if (f.index == index) return f.activation;
+    return 0.0f;
+}
+
+}  // namespace
+
+TEST(StateRepresentation, DiscreteOnlyHasOneFullyActiveFeaturePerCombination) {
+    AgentDescriptor d;
+    d.addDiscreteSensor(3).addDiscreteSensor(4);
+    StateRepresentation rep(d);
+    std::vector<ActiveFeature> phi;
+    const std::int32_t a[] = {2, 1};
+    EXPECT_EQ(rep.activate(a, nullptr, true, phi), 1u);
+    ASSERT_EQ(phi.size(), 1u);
+    EXPECT_EQ(phi[0].activation, 1.0f);
+    EXPECT_EQ(rep.featureKey(phi[0].index), 2u * 4u + 1u);  // mixed radix
+    EXPECT_EQ(rep.activate(a, nullptr, true, phi), 0u);  // seen before: no new feature
+    ASSERT_EQ(phi.size(), 1u);
+    const std::int32_t b[] = {2, 2};
+    rep.activate(b, nullptr, true, phi);  // other combinations never share features
+    ASSERT_EQ(phi.size(), 1u);
+    EXPECT_EQ(phi[0].index, 1u);
+    EXPECT_EQ(rep.activationSum(), 1.0f);
+}
+
+TEST(StateRepresentation, GaussianActivationWithWidthTwoOverResolution) {
+    StateRepresentation rep(continuous1D(10));  // sigma = 0.2
+    std::vector<ActiveFeature> phi;
+    const float x0 = 0.0f;
+    rep.activate(nullptr, &x0, true, phi);
+    const float x1 = 0.1f;  // within sigma of the first RBF: no new RBF
+    EXPECT_EQ(rep.activate(nullptr, &x1, true, phi), 0u);
+    ASSERT_EQ(phi.size(), 1u);
+    EXPECT_NEAR(phi[0].activation, std::exp(-0.01f / (2 * 0.04f)), 1e-6f);  // e^(-d^2 / 2 sigma^2)
+    EXPECT_NEAR(rep.activationSum(), 2.5f, 1e-6f);
+}
+
+TEST(StateRepresentation, AllocatesOnlyWhenNoRbfWithinOneWidth) {
+    StateRepresentation rep(continuous1D(10));
+    std::vector<ActiveFeature> phi;
+    const float a = 0.0f, b = 0.19f, c = 0.21f;
+    rep.activate(nullptr, &a, true, phi);
+    EXPECT_EQ(rep.activate(nullptr, &b, true, phi), 0u);
+    EXPECT_EQ(rep.activate(nullptr, &c, true, phi), 1u);  // 0.21 > sigma from 0: a new RBF centred on it
+    EXPECT_EQ(rep.featureCount(), 2u);
+    EXPECT_EQ(rep.centre(1)[0], 0.21f);
+    ASSERT_EQ(phi.size(), 2u);
+    EXPECT_NEAR(activationOf(phi, 0), std::exp(-0.0441f / 0.08f), 1e-6f);
+    EXPECT_EQ(activationOf(phi, 1), 1.0f);
+}
+
+TEST(StateRepresentation, IgnoresActivationsBeyondFourWidths) {
+    StateRepresentation rep(continuous1D(10));
+    std::vector<ActiveFeature> phi;
+    const float a = -0.5f, near = 0.29f, far = 0.31f;  // 4 sigma = 0.8
+    rep.activate(nullptr, &a, true, phi);
+    rep.activate(nullptr, &near, false, phi);
+    EXPECT_EQ(phi.size(), 1u);
+    rep.activate(nullptr, &far, false, phi);
+    EXPECT_TRUE(phi.empty());
+}
+
+TEST(StateRepresentation, CircularSensorsWrapAcrossTheSeam) {
+    StateRepresentation rep(continuous1D(10, true));
+    std::vector<ActiveFeature> phi;
+    const float a = 0.95f, b = -0.95f;  // 0.1 apart the short way round
+    rep.activate(nullptr, &a, true, phi);
+    EXPECT_EQ(rep.activate(nullptr, &b, true, phi), 0u);
+    ASSERT_EQ(phi.size(), 1u);
+    EXPECT_NEAR(phi[0].activation, std::exp(-0.01f / 0.08f), 1e-5f);
+
+    StateRepresentation flat(continuous1D(10, false));
+    flat.activate(nullptr, &a, true, phi);
+    EXPECT_EQ(flat.activate(nullptr, &b, true, phi), 1u);  // 1.9 apart: no wrap
+}
+
+TEST(StateRepresentation, DiscreteCombinationsHaveSeparateRbfArrays) {
+    AgentDescriptor d = continuous1D(10);
+    d.addDiscreteSensor(2);
+    StateRepresentation rep(d);
+    std::vector<ActiveFeature> phi;
+    const float x = 0.0f;
+    const std::int32_t day = 0, night = 1;
+    rep.activate(&day, &x, true, phi);
+    EXPECT_EQ(rep.activate(&night, &x, true, phi), 1u);  // same point, other array
+    ASSERT_EQ(phi.size(), 1u);
+    EXPECT_EQ(phi[0].index, 1u);
+}
+
+TEST(StateRepresentation, FullAllocationBuildsTheLattice) {
+    AgentDescriptor d = continuous1D(4);
+    d.addContinuousSensor();
+    d.addDiscreteSensor(3);
+    d.allocation = verve::RbfAllocation::Full;
+    StateRepresentation rep(d);
+    EXPECT_EQ(rep.featureCount(), 3u * 4u * 4u);
+    EXPECT_FLOAT_EQ(rep.centre(0)[0], -0.75f);  // -1 + (0 + 0.5) * sigma, sigma = 0.5
+    EXPECT_FLOAT_EQ(rep.centre(1)[0], -0.25f);
+    std::vector<ActiveFeature> phi;
+    const float x[] = {0.9f, -0.9f};
+    const std::int32_t k = 2;
+    EXPECT_EQ(rep.activate(&k, x, true, phi), 0u);  // full lattices never grow
+}
+
+// The spatial index must find exactly what a scan of every RBF finds.
+TEST(StateRepresentation, SpatialIndexMatchesBruteForce) {
+    for (bool circular : {false, true}) {
+        for (std::uint32_t resolution : {3u, 8u, 14u, 25u}) {
+            AgentDescriptor d;
+            d.addContinuousSensor(circular).addContinuousSensor().addContinuousSensor(circular);
+            d.resolution = resolution;
+            StateRepresentation rep(d);
+            verve::core::Rng rng(resolution);
+            std::vector<ActiveFeature> phi;
+            auto point = [&rng](float* p) { for (int i = 0; i < 3; ++i) p[i] = rng.uniform() * 2 - 1; };
+            float p[3];
+            for (int i = 0; i < 3000; ++i) { point(p); rep.activate(nullptr, p, true, phi); }
+            const float sigma = 2.0f / static_cast<float>(resolution);
+            for (int q = 0; q < 300; ++q) {
+                point(p);
+                rep.find(nullptr, p, phi);
+                std::size_t expected = 0;
+                for (std::uint32_t f = 0; f < rep.featureCount(); ++f) {
+                    float d2 = 0;
+                    for (int k = 0; k < 3; ++k) {
+                        float diff = p[k] - rep.centre(f)[k];
+                        if ((k != 1) && circular) { if (diff > 1) diff -= 2; else if (diff < -1) diff += 2; }
+                        d2 += diff * diff;
+                    }
+                    if (d2 >= 16 * sigma * sigma) continue;
+                    ++expected;
+                    EXPECT_NEAR(activationOf(phi, f), std::exp(-d2 / (2 * sigma * sigma)), 1e-5f);
+                }
+                EXPECT_EQ(phi.size(), expected) << "resolution " << resolution << " circular " << circular;
+            }
+        }
+    }
+}
