@@ -1,0 +1,99 @@
+#include "tasks/registry.hpp"
+
+#include "tasks/bandit.hpp"
+#include "tasks/curiosity_grid.hpp"
+#include "tasks/hot_plate.hpp"
+#include "tasks/maze.hpp"
+#include "tasks/sequential_actions.hpp"
+
+namespace verve::tasks {
+namespace {
+
+TaskFactory hotPlate(int dimensions, bool signaled, Sensors sensors) {
+    return [=](std::uint64_t) {
+        return std::make_unique<HotPlate>(HotPlateConfig{dimensions, signaled, sensors});
+    };
+}
+
+TaskFactory maze(MazeLayout (*layout)(), Sensors sensors, bool planning) {
+    return [=](std::uint64_t) {
+        auto task = std::make_unique<Maze>(layout(), sensors);
+        if (planning) {  // the original's measured planning run: model rate 1, plans of <= 50 steps
+            task->settings().planning = true;
+            task->settings().tauModel = 0.0f;
+            task->settings().maxPlanningSteps = 50;
+        }
+        return task;
+    };
+}
+
+TaskFactory curiosityGrid(CuriosityAgent agent) {
+    return [=](std::uint64_t) { return std::make_unique<CuriosityGrid>(agent); };
+}
+
+std::vector<TaskInfo> makeRegistry() {
+    const Sensors D = Sensors::Discrete;
+    const Sensors C = Sensors::Continuous;
+    return {
+        {"bandit", "10-armed bandit: one state, lever means ~N(0,1), payoff ~N(mean,1)",
+         [](std::uint64_t seed) { return std::make_unique<Bandit>(seed); }, 2000, 1000, Metric::Reward},
+        {"sequential-actions", "Suri & Schultz: 7 stimuli/actions, trained backwards in 100-trial blocks",
+         [](std::uint64_t seed) { return std::make_unique<SequentialActions>(seed); }, 200, 700, Metric::Success},
+        {"hot-plate-1d", "1D hot plate, 20 cells, both ends safe, discrete position", hotPlate(1, false, D), 300, 31,
+         Metric::Steps},
+        {"hot-plate-1d-continuous", "1D hot plate, continuous position (resolution 10)", hotPlate(1, false, C), 300,
+         31, Metric::Steps},
+        {"signaled-hot-plate-1d", "1D hot plate, one safe end named by a 2-valued signal, discrete position",
+         hotPlate(1, true, D), 500, 81, Metric::Steps},
+        {"signaled-hot-plate-1d-continuous", "1D signaled hot plate, continuous position (resolution 25)",
+         hotPlate(1, true, C), 500, 81, Metric::Steps},
+        {"hot-plate-2d", "2D hot plate, 20x20, all borders safe, discrete position", hotPlate(2, false, D), 300, 301,
+         Metric::Steps},
+        {"hot-plate-2d-continuous", "2D hot plate, continuous position (resolution 10)", hotPlate(2, false, C), 300,
+         301, Metric::Steps},
+        {"signaled-hot-plate-2d", "2D hot plate, one safe border named by a 4-valued signal, discrete position",
+         hotPlate(2, true, D), 300, 1601, Metric::Steps},
+        {"signaled-hot-plate-2d-continuous", "2D signaled hot plate, continuous position (resolution 25)",
+         hotPlate(2, true, C), 300, 1601, Metric::Steps},
+        {"maze1", "2D maze #1 (shortest path 22), discrete position", maze(maze1Layout, D, false), 50, 100,
+         Metric::Steps},
+        {"maze1-continuous", "2D maze #1, continuous position (resolution 15)", maze(maze1Layout, C, false), 50, 100,
+         Metric::Steps},
+        {"maze2", "2D maze #2 (shortest path 25), discrete position, no planning", maze(maze2Layout, D, false), 10,
+         51, Metric::Steps},
+        {"maze2-continuous", "2D maze #2, continuous position (resolution 15)", maze(maze2Layout, C, false), 10, 51,
+         Metric::Steps},
+        {"maze2-planning", "2D maze #2, discrete position, planning <= 50 steps, model rate 1",
+         maze(maze2Layout, D, true), 10, 51, Metric::Steps},
+        {"curiosity-grid-rl", "curiosity grid (0.1 near, 1.0 far), plain RL", curiosityGrid(CuriosityAgent::Rl), 30,
+         81, Metric::Reward},
+        {"curiosity-grid-planning", "curiosity grid, planning <= 50 steps",
+         curiosityGrid(CuriosityAgent::Planning), 30, 81, Metric::Reward},
+        {"curiosity-grid-curious", "curiosity grid, planning <= 50 steps plus curiosity",
+         curiosityGrid(CuriosityAgent::Curious), 30, 81, Metric::Reward},
+    };
+}
+
+}  // namespace
+
+const std::vector<TaskInfo>& taskRegistry() {
+    static const std::vector<TaskInfo> registry = makeRegistry();
+    return registry;
+}
+
+const TaskInfo* findTask(const std::string& name) {
+    for (const TaskInfo& info : taskRegistry()) {
+        if (info.name == name) return &info;
+    }
+    return nullptr;
+}
+
+const char* metricName(Metric metric) {
+    switch (metric) {
+        case Metric::Steps: return "steps";
+        case Metric::Reward: return "reward";
+        default: return "success";
+    }
+}
+
+}  // namespace verve::tasks
