@@ -1,0 +1,131 @@
+using System;
+using System.IO;
+using System.Text;
+using Xunit;
+
+namespace Verve.Tests
+{
+    public sealed class PersistenceTests : IDisposable
+    {
+        private readonly string _dir = Path.Combine(Path.GetTempPath(), "verve-cs-" + Guid.NewGuid().ToString("N"));
+
+        public PersistenceTests() => Directory.CreateDirectory(_dir);
+
+        public void Dispose() => Directory.Delete(_dir, recursive: true);
+
+        private static Agent Trained(ulong seed = 11)
+        {
+            var agent = TestAgents.Mixed(seed);
+            TestAgents.Run(agent, 300);
+            return agent;
+        }
+
+        [Fact]
+        public void FileRoundTripGivesIdenticalActions()
+        {
+            using var original = Trained();
+            string path = Path.Combine(_dir, "agent ü.xml"); // a space and non-ASCII: UTF-8 paths
+            original.Save(path);
+            Assert.StartsWith("<?xml", File.ReadAllText(path).TrimStart());
+
+            using var loaded = Agent.Load(path);
+            Assert.Equal(original.SaveToBytes(), loaded.SaveToBytes());
+            Assert.Equal(TestAgents.Run(original, 300, first: 300), TestAgents.Run(loaded, 300, first: 300));
+            Assert.Equal(original.Stats.Steps, loaded.Stats.Steps);
+        }
+
+        [Fact]
+        public void BytesRoundTripGivesIdenticalActionsAndOptions()
+        {
+            using var original = Trained();
+            byte[] bytes = original.SaveToBytes();
+            using var loaded = Agent.LoadFromBytes(bytes);
+            using var fromSpan = Agent.LoadFromBytes(new ReadOnlySpan<byte>(bytes));
+
+            Assert.Equal(original.Options.Seed, loaded.Options.Seed);
+            Assert.Equal(original.Options.DiscreteSensors, loaded.Options.DiscreteSensors);
+            Assert.Equal(original.RbfCount, loaded.RbfCount);
+            int[] expected = TestAgents.Run(original, 300, first: 300);
+            Assert.Equal(expected, TestAgents.Run(loaded, 300, first: 300));
+            Assert.Equal(expected, TestAgents.Run(fromSpan, 300, first: 300));
+        }
+
+        [Fact]
+        public void FileAndBytesHoldTheSameSave()
+        {
+            using var agent = Trained();
+            string path = Path.Combine(_dir, "same.xml");
+            agent.Save(path);
+            Assert.Equal(agent.SaveToBytes(), File.ReadAllBytes(path));
+        }
+
+        [Fact]
+        public void SaveReplacesAnOlderSave()
+        {
+            using var agent = Trained();
+            string path = Path.Combine(_dir, "replaced.xml");
+            File.WriteAllText(path, "old");
+            agent.Save(path);
+            Assert.Equal(agent.SaveToBytes(), File.ReadAllBytes(path));
+        }
+
+        [Fact]
+        public void CorruptBytesAreAFormatError()
+        {
+            using var agent = Trained();
+            byte[] bytes = agent.SaveToBytes();
+
+            byte[] truncated = bytes.AsSpan(0, bytes.Length / 2).ToArray();
+            Assert.Equal(ResultCode.Format, Assert.Throws<VerveException>(() => Agent.LoadFromBytes(truncated)).Code);
+
+            byte[] garbage = Encoding.UTF8.GetBytes("this is not a save");
+            Assert.Equal(ResultCode.Format, Assert.Throws<VerveException>(() => Agent.LoadFromBytes(garbage)).Code);
+
+            string text = Encoding.UTF8.GetString(bytes);
+            byte[] malformed = Encoding.UTF8.GetBytes(text.Replace("</", "<"));
+            Assert.Equal(ResultCode.Format, Assert.Throws<VerveException>(() => Agent.LoadFromBytes(malformed)).Code);
+
+            // Well-formed XML describing an impossible agent is refused too.
+            string actions = $"actions=\"{TestAgents.Actions}\"";
+            Assert.Contains(actions, text);
+            byte[] inconsistent = Encoding.UTF8.GetBytes(text.Replace(actions, "actions=\"0\""));
+            Assert.Equal(ResultCode.Format, Assert.Throws<VerveException>(() => Agent.LoadFromBytes(inconsistent)).Code);
+
+            byte[] flipped = (byte[])bytes.Clone();
+            flipped[flipped.Length / 2] = (byte)'\u0001';
+            Assert.Equal(ResultCode.Format, Assert.Throws<VerveException>(() => Agent.LoadFromBytes(flipped)).Code);
+        }
+
+        [Fact]
+        public void EmptyAndNullInputsAreRefused()
+        {
+            Assert.Throws<VerveException>(() => Agent.LoadFromBytes(Array.Empty<byte>()));
+            Assert.Throws<ArgumentNullException>(() => Agent.LoadFromBytes((byte[])null!));
+            Assert.Throws<ArgumentNullException>(() => Agent.Load(null!));
+            using var agent = Trained();
+            Assert.Throws<ArgumentNullException>(() => agent.Save(null!));
+            Assert.Throws<ArgumentException>(() => agent.Save("bad\0name.xml"));
+        }
+
+        [Fact]
+        public void MissingFilesAndFoldersAreIoErrors()
+        {
+            var e = Assert.Throws<VerveException>(() => Agent.Load(Path.Combine(_dir, "missing.xml")));
+            Assert.Equal(ResultCode.Io, e.Code);
+            Assert.Contains("missing.xml", e.Message);
+
+            using var agent = Trained();
+            string inMissingFolder = Path.Combine(_dir, "no-such-folder", "agent.xml");
+            Assert.Equal(ResultCode.Io, Assert.Throws<VerveException>(() => agent.Save(inMissingFolder)).Code);
+            Assert.False(File.Exists(inMissingFolder));
+        }
+
+        [Fact]
+        public void CorruptFileIsAFormatError()
+        {
+            string path = Path.Combine(_dir, "corrupt.xml");
+            File.WriteAllText(path, "<verve><agent");
+            Assert.Equal(ResultCode.Format, Assert.Throws<VerveException>(() => Agent.Load(path)).Code);
+        }
+    }
+}

@@ -1,0 +1,60 @@
+/* Prints what the C compiler thinks of verve_c.h: sizes, field offsets, constants.
+ * Built by Verve.Tests.csproj; NativeLayoutTests compares every line with the C# mirrors. */
+#include <stddef.h>
+#include <stdio.h>
+#include "verve_c.h"
+
+#define SIZE(type) printf("size %s %zu\n", #type, sizeof(type))
+#define FIELD(type, field) printf("offset %s %s %zu\n", #type, #field, offsetof(type, field))
+
+int main(void) {
+    SIZE(verve_agent_desc);
+    FIELD(verve_agent_desc, struct_size);
+    FIELD(verve_agent_desc, num_discrete_sensors);
+    FIELD(verve_agent_desc, discrete_sensor_values);
+    FIELD(verve_agent_desc, num_continuous_sensors);
+    FIELD(verve_agent_desc, continuous_sensor_circular);
+    FIELD(verve_agent_desc, resolution);
+    FIELD(verve_agent_desc, num_actions);
+    FIELD(verve_agent_desc, rbf_allocation);
+    FIELD(verve_agent_desc, tau_value);
+    FIELD(verve_agent_desc, tau_discount);
+    FIELD(verve_agent_desc, tau_eligibility);
+    FIELD(verve_agent_desc, policy_multiplier);
+    FIELD(verve_agent_desc, trace_threshold);
+    FIELD(verve_agent_desc, seed);
+    FIELD(verve_agent_desc, planning);
+    FIELD(verve_agent_desc, tau_model);
+    FIELD(verve_agent_desc, max_planning_steps);
+    FIELD(verve_agent_desc, planning_uncertainty_threshold);
+    FIELD(verve_agent_desc, curiosity);
+    FIELD(verve_agent_desc, curiosity_factor);
+
+    SIZE(verve_agent_stats);
+    FIELD(verve_agent_stats, struct_size);
+    FIELD(verve_agent_stats, steps);
+    FIELD(verve_agent_stats, rbf_count);
+    FIELD(verve_agent_stats, live_traces);
+    FIELD(verve_agent_stats, value);
+    FIELD(verve_agent_stats, td_error);
+    FIELD(verve_agent_stats, model_error);
+    FIELD(verve_agent_stats, predicted_uncertainty);
+    FIELD(verve_agent_stats, planning_steps);
+    FIELD(verve_agent_stats, curiosity_reward);
+
+    SIZE(verve_value_axis);
+    FIELD(verve_value_axis, kind);
+    FIELD(verve_value_axis, index);
+    FIELD(verve_value_axis, samples);
+
+    printf("const VERVE_AGENT_DESC_SIZE_V2 %u\n", (unsigned)VERVE_AGENT_DESC_SIZE_V2);
+    printf("const VERVE_VERSION_NUMBER %d\n", VERVE_VERSION_NUMBER);
+    printf("const VERVE_MAX_DISCRETE_SENSORS %d\n", VERVE_MAX_DISCRETE_SENSORS);
+    printf("const VERVE_MAX_CONTINUOUS_SENSORS %d\n", VERVE_MAX_CONTINUOUS_SENSORS);
+    printf("const VERVE_RBF_FULL %d\n", VERVE_RBF_FULL);
+    printf("const VERVE_CURIOSITY_PROGRESS %d\n", VERVE_CURIOSITY_PROGRESS);
+    printf("const VERVE_SENSOR_CONTINUOUS %d\n", VERVE_SENSOR_CONTINUOUS);
+    printf("const VERVE_ERROR_INTERNAL %d\n", VERVE_ERROR_INTERNAL);
+    printf("const sizeof_enum %zu\n", sizeof(verve_result));
+    return 0;
+}

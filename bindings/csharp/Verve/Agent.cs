@@ -1,0 +1,234 @@
+using System;
+using System.Text;
+using Verve.Native;
+
+namespace Verve
+{
+    /// <summary>A reinforcement-learning agent living in native memory. Each <see cref="Update(float, ReadOnlySpan{int}, ReadOnlySpan{float}, float)"/>
+    /// takes the reward earned by the previous action and the new observation, learns, and returns the next action.
+    /// Use one agent from one thread at a time; different agents may run on different threads.
+    /// Dispose it to free the native memory at once (otherwise the finalizer does).</summary>
+    /// <remarks>Every failed call throws <see cref="VerveException"/> (with the native message) and leaves
+    /// the agent unchanged; calls on a disposed agent throw <see cref="ObjectDisposedException"/>.</remarks>
+    public sealed class Agent : IDisposable
+    {
+        private readonly AgentHandle _handle;
+
+        /// <summary>Creates an agent described by <paramref name="options"/>.</summary>
+        /// <exception cref="VerveException">The description is invalid (the message names the field).</exception>
+        public unsafe Agent(AgentOptions options)
+        {
+            if (options == null) throw new ArgumentNullException(nameof(options));
+            verve_agent_desc desc = options.ToNative();
+            VerveException.ThrowIfFailed(NativeMethods.verve_agent_create(&desc, out IntPtr agent));
+            _handle = new AgentHandle(agent);
+        }
+
+        private Agent(IntPtr agent) => _handle = new AgentHandle(agent);
+
+        /// <summary>Whether <see cref="Dispose"/> has been called.</summary>
+        public bool IsDisposed => _handle.IsClosed;
+
+        // Checked on every call so a disposed agent fails with a clear message, not a marshalling error.
+        private AgentHandle Handle => _handle.IsClosed ? throw new ObjectDisposedException(nameof(Agent)) : _handle;
+
+        /// <summary>One step: learn from <paramref name="reward"/> (earned by the previous action, clamped
+        /// to [-1, 1]) and the new observation, and choose the next action. Null arrays mean no sensors of that kind.</summary>
+        /// <returns>The action to take, in [0, <see cref="AgentOptions.Actions"/>).</returns>
+        public int Update(float reward, int[]? discrete, float[]? continuous, float dt) =>
+            Update(reward, new ReadOnlySpan<int>(discrete), new ReadOnlySpan<float>(continuous), dt);
+
+        /// <summary>One step without allocation; see <see cref="Update(float, int[], float[], float)"/>.</summary>
+        /// <param name="reward">What the previous action earned.</param>
+        /// <param name="discrete">One value per discrete sensor, each in [0, its value count).</param>
+        /// <param name="continuous">One value per continuous sensor, in [-1, 1] (clamped, or wrapped when circular).</param>
+        /// <param name="dt">Seconds since the previous step, &gt; 0.</param>
+        /// <exception cref="VerveException">Wrong counts, NaN/infinity, out-of-range discrete values or dt &lt;= 0.</exception>
+        public unsafe int Update(float reward, ReadOnlySpan<int> discrete, ReadOnlySpan<float> continuous, float dt)
+        {
+            AgentHandle handle = Handle;
+            uint action;
+            fixed (int* d = discrete)
+            fixed (float* c = continuous)
+            {
+                VerveException.ThrowIfFailed(NativeMethods.verve_agent_update(handle, reward,
+                    d, (uint)discrete.Length, c, (uint)continuous.Length, dt, out action));
+            }
+            return (int)action;
+        }
+
+        /// <summary>Ends a trial with a terminal reward; nothing is bootstrapped past it.</summary>
+        public void EndEpisode(float finalReward) =>
+            VerveException.ThrowIfFailed(NativeMethods.verve_agent_end_episode(Handle, finalReward));
+
+        /// <summary>Forgets the current trial (traces, previous observation) but keeps everything learned.</summary>
+        public void ResetShortTermMemory() =>
+            VerveException.ThrowIfFailed(NativeMethods.verve_agent_reset_short_term_memory(Handle));
+
+        /// <summary>Whether updates change the agent's weights; off, it only acts.</summary>
+        public bool Learning
+        {
+            get
+            {
+                VerveException.ThrowIfFailed(NativeMethods.verve_agent_get_learning(Handle, out int enabled));
+                return enabled != 0;
+            }
+            set => VerveException.ThrowIfFailed(NativeMethods.verve_agent_set_learning(Handle, value ? 1 : 0));
+        }
+
+        /// <summary>A copy of the description this agent was created with (changing it changes nothing).</summary>
+        public unsafe AgentOptions Options
+        {
+            get
+            {
+                var desc = new verve_agent_desc { struct_size = (uint)sizeof(verve_agent_desc) };
+                VerveException.ThrowIfFailed(NativeMethods.verve_agent_get_desc(Handle, &desc));
+                return new AgentOptions(desc);
+            }
+        }
+
+        /// <summary>V(s) of the latest observation.</summary>
+        public float Value
+        {
+            get
+            {
+                VerveException.ThrowIfFailed(NativeMethods.verve_agent_get_value(Handle, out float value));
+                return value;
+            }
+        }
+
+        /// <summary>TD error of the latest real step.</summary>
+        public float TdError
+        {
+            get
+            {
+                VerveException.ThrowIfFailed(NativeMethods.verve_agent_get_td_error(Handle, out float tdError));
+                return tdError;
+            }
+        }
+
+        /// <summary>RBFs allocated so far.</summary>
+        public int RbfCount
+        {
+            get
+            {
+                VerveException.ThrowIfFailed(NativeMethods.verve_agent_get_rbf_count(Handle, out uint count));
+                return (int)count;
+            }
+        }
+
+        /// <summary>Counters and latest learning signals.</summary>
+        public unsafe AgentStats Stats
+        {
+            get
+            {
+                var stats = new verve_agent_stats { struct_size = (uint)sizeof(verve_agent_stats) };
+                VerveException.ThrowIfFailed(NativeMethods.verve_agent_get_stats(Handle, &stats));
+                return new AgentStats(stats);
+            }
+        }
+
+        /// <summary>V over one swept sensor, the other sensors held at the base observation.</summary>
+        /// <returns><c>axis.Samples</c> values.</returns>
+        public float[] SampleValues(ValueAxis axis, ReadOnlySpan<int> baseDiscrete, ReadOnlySpan<float> baseContinuous)
+        {
+            Span<ValueAxis> axes = stackalloc ValueAxis[] { axis };
+            return SampleValues(axes, baseDiscrete, baseContinuous);
+        }
+
+        /// <summary>V over two swept sensors, the other sensors held at the base observation.</summary>
+        /// <returns><c>axis0.Samples * axis1.Samples</c> values, axis 0 fastest.</returns>
+        public float[] SampleValues(ValueAxis axis0, ValueAxis axis1, ReadOnlySpan<int> baseDiscrete, ReadOnlySpan<float> baseContinuous)
+        {
+            Span<ValueAxis> axes = stackalloc ValueAxis[] { axis0, axis1 };
+            return SampleValues(axes, baseDiscrete, baseContinuous);
+        }
+
+        /// <summary>V over one or two swept sensors into the start of <paramref name="destination"/>, which must
+        /// hold at least the product of the axes' sample counts (axis 0 fastest). The base observation gives
+        /// the values of the sensors not swept (the swept entries are ignored).</summary>
+        public unsafe void SampleValues(ReadOnlySpan<ValueAxis> axes, ReadOnlySpan<int> baseDiscrete,
+            ReadOnlySpan<float> baseContinuous, Span<float> destination)
+        {
+            AgentHandle handle = Handle;
+            fixed (ValueAxis* a = axes)
+            fixed (int* d = baseDiscrete)
+            fixed (float* c = baseContinuous)
+            fixed (float* o = destination)
+            {
+                VerveException.ThrowIfFailed(NativeMethods.verve_agent_sample_values(handle, a, (uint)axes.Length,
+                    d, (uint)baseDiscrete.Length, c, (uint)baseContinuous.Length, o, (uint)destination.Length));
+            }
+        }
+
+        private float[] SampleValues(ReadOnlySpan<ValueAxis> axes, ReadOnlySpan<int> baseDiscrete, ReadOnlySpan<float> baseContinuous)
+        {
+            long count = 1;
+            foreach (ValueAxis axis in axes) count *= axis.Samples;
+            if (count > int.MaxValue) throw new ArgumentOutOfRangeException(nameof(axes), count, "too many samples");
+            var values = new float[count];
+            SampleValues(axes, baseDiscrete, baseContinuous, values);
+            return values;
+        }
+
+        /// <summary>Saves the agent as XML to <paramref name="path"/>, atomically: the previous file
+        /// survives a crash mid-save.</summary>
+        public unsafe void Save(string path)
+        {
+            AgentHandle handle = Handle;
+            fixed (byte* p = NulTerminatedUtf8(path))
+                VerveException.ThrowIfFailed(NativeMethods.verve_agent_save(handle, p));
+        }
+
+        /// <summary>Loads an agent saved by <see cref="Save(string)"/>.</summary>
+        /// <exception cref="VerveException"><see cref="ResultCode.Io"/>, <see cref="ResultCode.Format"/> or <see cref="ResultCode.Version"/>.</exception>
+        public static unsafe Agent Load(string path)
+        {
+            VerveLibrary.EnsureCompatible();
+            IntPtr agent;
+            fixed (byte* p = NulTerminatedUtf8(path))
+                VerveException.ThrowIfFailed(NativeMethods.verve_agent_load(p, out agent));
+            return new Agent(agent);
+        }
+
+        /// <summary>The agent's save (the same XML as <see cref="Save(string)"/>) as bytes.</summary>
+        public unsafe byte[] SaveToBytes()
+        {
+            AgentHandle handle = Handle;
+            var size = UIntPtr.Zero;
+            VerveException.ThrowIfFailed(NativeMethods.verve_agent_save_memory(handle, null, ref size));
+            var bytes = new byte[checked((int)size.ToUInt64())];
+            fixed (byte* b = bytes)
+                VerveException.ThrowIfFailed(NativeMethods.verve_agent_save_memory(handle, b, ref size));
+            if (size.ToUInt64() != (ulong)bytes.Length) Array.Resize(ref bytes, (int)size.ToUInt64());
+            return bytes;
+        }
+
+        /// <summary>Loads an agent from bytes made by <see cref="SaveToBytes"/>.</summary>
+        public static Agent LoadFromBytes(byte[] data) =>
+            LoadFromBytes(new ReadOnlySpan<byte>(data ?? throw new ArgumentNullException(nameof(data))));
+
+        /// <summary>Loads an agent from bytes made by <see cref="SaveToBytes"/>.</summary>
+        /// <exception cref="VerveException"><see cref="ResultCode.Format"/> when the bytes are corrupt or truncated.</exception>
+        public static unsafe Agent LoadFromBytes(ReadOnlySpan<byte> data)
+        {
+            VerveLibrary.EnsureCompatible();
+            IntPtr agent;
+            fixed (byte* d = data)
+                VerveException.ThrowIfFailed(NativeMethods.verve_agent_load_memory(d, (UIntPtr)data.Length, out agent));
+            return new Agent(agent);
+        }
+
+        /// <summary>Frees the native agent. Further calls throw <see cref="ObjectDisposedException"/>.</summary>
+        public void Dispose() => _handle.Dispose();
+
+        private static byte[] NulTerminatedUtf8(string path)
+        {
+            if (path == null) throw new ArgumentNullException(nameof(path));
+            if (path.IndexOf('\0') >= 0) throw new ArgumentException("path contains a NUL character", nameof(path));
+            var bytes = new byte[Encoding.UTF8.GetByteCount(path) + 1];
+            Encoding.UTF8.GetBytes(path, 0, path.Length, bytes, 0);
+            return bytes;
+        }
+    }
+}

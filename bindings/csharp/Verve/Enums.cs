@@ -1,0 +1,31 @@
+namespace Verve
+{
+    /// <summary>How RBFs of continuous sensors are created (<c>verve_rbf_allocation</c>).</summary>
+    public enum RbfAllocation : uint
+    {
+        /// <summary>RBFs are created where observations land (default).</summary>
+        Dynamic = 0,
+        /// <summary>The whole lattice is created up front.</summary>
+        Full = 1,
+    }
+
+    /// <summary>Intrinsic reward added during planning (<c>verve_curiosity</c>).</summary>
+    public enum Curiosity : uint
+    {
+        /// <summary>No curiosity reward.</summary>
+        None = 0,
+        /// <summary>Reward proportional to predicted uncertainty (the thesis).</summary>
+        Novelty = 1,
+        /// <summary>Reward for a falling prediction error (ignores pure noise).</summary>
+        Progress = 2,
+    }
+
+    /// <summary>Which kind of sensor a <see cref="ValueAxis"/> sweeps (<c>verve_sensor_kind</c>).</summary>
+    public enum SensorKind : uint
+    {
+        /// <summary>A sensor reading one of N integer values.</summary>
+        Discrete = 0,
+        /// <summary>A sensor reading a float in [-1, 1].</summary>
+        Continuous = 1,
+    }
+}

@@ -1,0 +1,82 @@
+using System;
+using System.Runtime.InteropServices;
+
+namespace Verve.Native
+{
+    // The C ABI, one declaration per function of include/verve_c.h. Pointers rather than marshalled
+    // arrays so a call never copies or allocates; the agent travels as a SafeHandle so it cannot be
+    // freed by another thread while a call runs.
+    internal static unsafe class NativeMethods
+    {
+        private const string Library = "verve";
+
+        [DllImport(Library, CallingConvention = CallingConvention.Cdecl)]
+        internal static extern uint verve_version();
+
+        [DllImport(Library, CallingConvention = CallingConvention.Cdecl)]
+        internal static extern IntPtr verve_last_error();
+
+        [DllImport(Library, CallingConvention = CallingConvention.Cdecl)]
+        internal static extern IntPtr verve_result_name(ResultCode result);
+
+        [DllImport(Library, CallingConvention = CallingConvention.Cdecl)]
+        internal static extern void verve_agent_desc_default(void* desc);
+
+        [DllImport(Library, CallingConvention = CallingConvention.Cdecl)]
+        internal static extern ResultCode verve_agent_desc_init(verve_agent_desc* desc, uint structSize);
+
+        [DllImport(Library, CallingConvention = CallingConvention.Cdecl)]
+        internal static extern ResultCode verve_agent_create(verve_agent_desc* desc, out IntPtr agent);
+
+        [DllImport(Library, CallingConvention = CallingConvention.Cdecl)]
+        internal static extern void verve_agent_destroy(IntPtr agent);
+
+        [DllImport(Library, CallingConvention = CallingConvention.Cdecl)]
+        internal static extern ResultCode verve_agent_update(AgentHandle agent, float reward,
+            int* discrete, uint nDiscrete, float* continuous, uint nContinuous, float dt, out uint action);
+
+        [DllImport(Library, CallingConvention = CallingConvention.Cdecl)]
+        internal static extern ResultCode verve_agent_end_episode(AgentHandle agent, float finalReward);
+
+        [DllImport(Library, CallingConvention = CallingConvention.Cdecl)]
+        internal static extern ResultCode verve_agent_reset_short_term_memory(AgentHandle agent);
+
+        [DllImport(Library, CallingConvention = CallingConvention.Cdecl)]
+        internal static extern ResultCode verve_agent_set_learning(AgentHandle agent, int enabled);
+
+        [DllImport(Library, CallingConvention = CallingConvention.Cdecl)]
+        internal static extern ResultCode verve_agent_get_learning(AgentHandle agent, out int enabled);
+
+        [DllImport(Library, CallingConvention = CallingConvention.Cdecl)]
+        internal static extern ResultCode verve_agent_get_desc(AgentHandle agent, verve_agent_desc* desc);
+
+        [DllImport(Library, CallingConvention = CallingConvention.Cdecl)]
+        internal static extern ResultCode verve_agent_get_value(AgentHandle agent, out float value);
+
+        [DllImport(Library, CallingConvention = CallingConvention.Cdecl)]
+        internal static extern ResultCode verve_agent_get_td_error(AgentHandle agent, out float tdError);
+
+        [DllImport(Library, CallingConvention = CallingConvention.Cdecl)]
+        internal static extern ResultCode verve_agent_get_rbf_count(AgentHandle agent, out uint count);
+
+        [DllImport(Library, CallingConvention = CallingConvention.Cdecl)]
+        internal static extern ResultCode verve_agent_get_stats(AgentHandle agent, verve_agent_stats* stats);
+
+        [DllImport(Library, CallingConvention = CallingConvention.Cdecl)]
+        internal static extern ResultCode verve_agent_sample_values(AgentHandle agent, ValueAxis* axes, uint nAxes,
+            int* baseDiscrete, uint nDiscrete, float* baseContinuous, uint nContinuous, float* output, uint outputCount);
+
+        // Paths are NUL-terminated UTF-8 bytes, encoded by the caller (portable across Mono/IL2CPP).
+        [DllImport(Library, CallingConvention = CallingConvention.Cdecl)]
+        internal static extern ResultCode verve_agent_save(AgentHandle agent, byte* path);
+
+        [DllImport(Library, CallingConvention = CallingConvention.Cdecl)]
+        internal static extern ResultCode verve_agent_load(byte* path, out IntPtr agent);
+
+        [DllImport(Library, CallingConvention = CallingConvention.Cdecl)]
+        internal static extern ResultCode verve_agent_save_memory(AgentHandle agent, byte* buffer, ref UIntPtr size);
+
+        [DllImport(Library, CallingConvention = CallingConvention.Cdecl)]
+        internal static extern ResultCode verve_agent_load_memory(byte* data, UIntPtr size, out IntPtr agent);
+    }
+}

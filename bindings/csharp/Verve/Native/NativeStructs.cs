@@ -1,0 +1,56 @@
+using System.Runtime.InteropServices;
+
+namespace Verve.Native
+{
+    // Exact mirrors of the structs in include/verve_c.h. Field names keep the C spelling so the layout
+    // test can compare every offset with the C compiler's (Verve.Tests/NativeLayoutTests.cs).
+    // All fields are blittable: the runtime passes a pointer to these, never a marshalled copy.
+#pragma warning disable IDE1006 // C names on purpose
+
+    [StructLayout(LayoutKind.Sequential)]
+    internal unsafe struct verve_agent_desc
+    {
+        public const int MaxDiscreteSensors = 16;   // VERVE_MAX_DISCRETE_SENSORS
+        public const int MaxContinuousSensors = 16; // VERVE_MAX_CONTINUOUS_SENSORS
+
+        public uint struct_size;
+        public uint num_discrete_sensors;
+        public fixed uint discrete_sensor_values[MaxDiscreteSensors];
+        public uint num_continuous_sensors;
+        public fixed byte continuous_sensor_circular[MaxContinuousSensors];
+        public uint resolution;
+        public uint num_actions;
+        public uint rbf_allocation;
+
+        public float tau_value;
+        public float tau_discount;
+        public float tau_eligibility;
+        public float policy_multiplier;
+        public float trace_threshold;
+        public ulong seed;
+
+        public uint planning;
+        public float tau_model;
+        public uint max_planning_steps;
+        public float planning_uncertainty_threshold;
+        public uint curiosity;
+        public float curiosity_factor;
+    }
+
+    [StructLayout(LayoutKind.Sequential)]
+    internal struct verve_agent_stats
+    {
+        public uint struct_size;
+        public ulong steps;
+        public uint rbf_count;
+        public uint live_traces;
+        public float value;
+        public float td_error;
+        public float model_error;
+        public float predicted_uncertainty;
+        public uint planning_steps;
+        public float curiosity_reward;
+    }
+
+#pragma warning restore IDE1006
+}
