@@ -1,0 +1,668 @@
+/* verve_lua.c - the Lua module `verve` (require "verve"), a thin layer over the C ABI.
+ *
+ * One source, built twice: against Lua 5.4 and against LuaJIT 2.1 (the Lua 5.1 API).
+ * Indexing follows Lua: actions, discrete sensor values and sensor indices are 1-based here and
+ * shifted by one at the C boundary. Continuous values stay in [-1, 1].
+ * Nothing the binding does per update allocates: observations are read into stack buffers. */
+#include <float.h>
+#include <stddef.h>
+#include <stdint.h>
+#include <string.h>
+
+#include <verve_c.h>
+
+#include "lua_compat.h"
+
+#if defined(_WIN32)
+#  define LV_EXPORT __declspec(dllexport)
+#else
+#  define LV_EXPORT __attribute__((visibility("default")))
+#endif
+
+#define LV_AGENT_MT "verve.agent"
+/* sample_values refuses more points than this instead of allocating without bound. */
+#define LV_MAX_SAMPLES (1u << 24)
+
+typedef struct lv_agent {
+    verve_agent* handle; /* NULL once closed */
+} lv_agent;
+
+typedef struct lv_obs {
+    int32_t discrete[VERVE_MAX_DISCRETE_SENSORS]; /* 0-based, as the C ABI wants them */
+    float continuous[VERVE_MAX_CONTINUOUS_SENSORS];
+    uint32_t n_discrete;
+    uint32_t n_continuous;
+} lv_obs;
+
+/* ---- errors and conversions ------------------------------------------------------------- */
+
+static int lv_fail(lua_State* L, const char* fn, verve_result r) {
+    return luaL_error(L, "verve: %s: %s [%s]", fn, verve_last_error(), verve_result_name(r));
+}
+
+/* For calls taking 1-based sensors or values: the library's message speaks 0-based. */
+static int lv_fail_indexed(lua_State* L, const char* fn, verve_result r) {
+    return luaL_error(L, "verve: %s: %s [%s] (the library counts sensors and values from 0, Lua from 1)", fn,
+                      verve_last_error(), verve_result_name(r));
+}
+
+/* Lua numbers are doubles; a finite double beyond float range becomes an infinity (which the
+ * library refuses) instead of an undefined conversion. */
+static float lv_to_float(lua_Number n) {
+    if (n > FLT_MAX) return (float)HUGE_VAL;
+    if (n < -FLT_MAX) return (float)-HUGE_VAL;
+    return (float)n;
+}
+
+/* The non-negative integer at idx that fits 32 bits, else 0. */
+static int lv_get_u32(lua_State* L, int idx, uint32_t* out) {
+    lua_Integer v = 0;
+    if (!lv_tointeger(L, idx, &v) || v < 0 || v > (lua_Integer)UINT32_MAX) return 0;
+    *out = (uint32_t)v;
+    return 1;
+}
+
+/* Refuses keys other than `allowed` in the table at idx: a typo must not pass silently. */
+static void lv_check_keys(lua_State* L, int idx, const char* const* allowed, const char* fn,
+                          const char* what) {
+    idx = lua_absindex(L, idx);
+    lua_pushnil(L);
+    while (lua_next(L, idx)) {
+        const char* const* a = allowed;
+        if (lua_type(L, -2) != LUA_TSTRING)
+            luaL_error(L, "verve: %s: %s fields are names (got a %s key)", fn, what, luaL_typename(L, -2));
+        while (*a && strcmp(*a, lua_tostring(L, -2)) != 0) ++a;
+        if (!*a) luaL_error(L, "verve: %s: unknown %s field '%s'", fn, what, lua_tostring(L, -2));
+        lua_pop(L, 1);
+    }
+}
+
+/* ---- agent userdata --------------------------------------------------------------------- */
+
+static lv_agent* lv_push_agent(lua_State* L) {
+    lv_agent* ud = (lv_agent*)lua_newuserdata(L, sizeof *ud);
+    ud->handle = NULL; /* set only after the C call succeeds, so a failure leaks nothing */
+    luaL_setmetatable(L, LV_AGENT_MT);
+    return ud;
+}
+
+static verve_agent* lv_open_agent(lua_State* L) {
+    lv_agent* ud = (lv_agent*)luaL_checkudata(L, 1, LV_AGENT_MT);
+    if (!ud->handle) luaL_error(L, "verve: the agent is closed");
+    return ud->handle;
+}
+
+/* ---- descriptor <-> table --------------------------------------------------------------- */
+
+typedef enum lv_kind { LV_UINT, LV_FLOAT, LV_SEED, LV_BOOL, LV_ENUM } lv_kind;
+
+typedef struct lv_field {
+    const char* name;
+    size_t offset;
+    lv_kind kind;
+    const char* const* names; /* LV_ENUM: value i is names[i] */
+} lv_field;
+
+static const char* const lv_allocation_names[] = {"dynamic", "full", NULL};
+static const char* const lv_curiosity_names[] = {"none", "novelty", "progress", NULL};
+
+#define LV_FIELD(name, member, kind, names) {name, offsetof(verve_agent_desc, member), kind, names}
+static const lv_field lv_fields[] = {
+    LV_FIELD("actions", num_actions, LV_UINT, NULL),
+    LV_FIELD("resolution", resolution, LV_UINT, NULL),
+    LV_FIELD("allocation", rbf_allocation, LV_ENUM, lv_allocation_names),
+    LV_FIELD("tau_value", tau_value, LV_FLOAT, NULL),
+    LV_FIELD("tau_discount", tau_discount, LV_FLOAT, NULL),
+    LV_FIELD("tau_eligibility", tau_eligibility, LV_FLOAT, NULL),
+    LV_FIELD("policy_multiplier", policy_multiplier, LV_FLOAT, NULL),
+    LV_FIELD("trace_threshold", trace_threshold, LV_FLOAT, NULL),
+    LV_FIELD("seed", seed, LV_SEED, NULL),
+    LV_FIELD("planning", planning, LV_BOOL, NULL),
+    LV_FIELD("tau_model", tau_model, LV_FLOAT, NULL),
+    LV_FIELD("max_planning_steps", max_planning_steps, LV_UINT, NULL),
+    LV_FIELD("planning_uncertainty_threshold", planning_uncertainty_threshold, LV_FLOAT, NULL),
+    LV_FIELD("curiosity", curiosity, LV_ENUM, lv_curiosity_names),
+    LV_FIELD("curiosity_factor", curiosity_factor, LV_FLOAT, NULL),
+};
+#define LV_FIELD_COUNT (sizeof lv_fields / sizeof lv_fields[0])
+
+static const char* const lv_sensor_keys[] = {"circular", NULL};
+
+static void lv_desc_error(lua_State* L, const char* field, const char* expected) {
+    luaL_error(L, "verve: agent: descriptor field '%s' must be %s (got %s)", field, expected,
+               luaL_typename(L, -1));
+}
+
+/* The value on top of the stack into one scalar descriptor field. */
+static void lv_read_field(lua_State* L, const lv_field* f, verve_agent_desc* d) {
+    char* p = (char*)d + f->offset;
+    lua_Integer v = 0;
+    switch (f->kind) {
+    case LV_UINT:
+        if (!lv_get_u32(L, -1, (uint32_t*)p)) lv_desc_error(L, f->name, "a non-negative integer");
+        break;
+    case LV_FLOAT:
+        if (lua_type(L, -1) != LUA_TNUMBER) lv_desc_error(L, f->name, "a number");
+        *(float*)p = lv_to_float(lua_tonumber(L, -1));
+        break;
+    case LV_SEED:
+        if (!lv_tointeger(L, -1, &v) || v < 0) lv_desc_error(L, f->name, "a non-negative integer");
+        *(uint64_t*)p = (uint64_t)v;
+        break;
+    case LV_BOOL:
+        if (!lua_isboolean(L, -1)) lv_desc_error(L, f->name, "a boolean");
+        *(uint32_t*)p = lua_toboolean(L, -1) ? 1u : 0u;
+        break;
+    case LV_ENUM: {
+        uint32_t i = 0;
+        if (lua_type(L, -1) == LUA_TSTRING)
+            while (f->names[i] && strcmp(f->names[i], lua_tostring(L, -1)) != 0) ++i;
+        if (lua_type(L, -1) != LUA_TSTRING || !f->names[i]) {
+            int n = 0;
+            for (; f->names[n]; ++n) lua_pushfstring(L, "%s\"%s\"", n ? ", " : "", f->names[n]);
+            lua_concat(L, n);
+            luaL_error(L, "verve: agent: descriptor field '%s' must be one of %s", f->name, lua_tostring(L, -1));
+        }
+        *(uint32_t*)p = i;
+        break;
+    }
+    }
+}
+
+/* names[u], or "unknown" past the end of the list. */
+static const char* lv_enum_name(const char* const* names, uint32_t u) {
+    uint32_t i = 0;
+    while (names[i] && i < u) ++i;
+    return names[i] ? names[i] : "unknown";
+}
+
+static void lv_push_field(lua_State* L, const lv_field* f, const verve_agent_desc* d) {
+    const char* p = (const char*)d + f->offset;
+    switch (f->kind) {
+    case LV_UINT:
+        lua_pushinteger(L, (lua_Integer)*(const uint32_t*)p);
+        break;
+    case LV_FLOAT:
+        lua_pushnumber(L, (lua_Number)*(const float*)p);
+        break;
+    case LV_SEED:
+        lua_pushinteger(L, (lua_Integer)*(const uint64_t*)p);
+        break;
+    case LV_BOOL:
+        lua_pushboolean(L, *(const uint32_t*)p != 0);
+        break;
+    case LV_ENUM:
+        lua_pushstring(L, lv_enum_name(f->names, *(const uint32_t*)p));
+        break;
+    }
+}
+
+/* discrete = {values of sensor 1, values of sensor 2, ...}, the value on top of the stack. */
+static void lv_read_discrete_sensors(lua_State* L, verve_agent_desc* d) {
+    uint32_t n, i;
+    if (!lua_istable(L, -1)) lv_desc_error(L, "discrete", "a list of value counts");
+    n = (uint32_t)lua_rawlen(L, -1);
+    if (n > VERVE_MAX_DISCRETE_SENSORS)
+        luaL_error(L, "verve: agent: %d discrete sensors; at most %d", (int)n, VERVE_MAX_DISCRETE_SENSORS);
+    for (i = 0; i < n; ++i) {
+        lua_rawgeti(L, -1, (int)i + 1);
+        if (!lv_get_u32(L, -1, &d->discrete_sensor_values[i]))
+            lv_desc_error(L, "discrete", "a list of non-negative integer value counts");
+        lua_pop(L, 1);
+    }
+    d->num_discrete_sensors = n;
+}
+
+/* continuous = N (N plain sensors) or {{circular = true}, {}, ...}, on top of the stack. */
+static void lv_read_continuous_sensors(lua_State* L, verve_agent_desc* d) {
+    uint32_t n = 0, i;
+    int listed = lua_istable(L, -1);
+    if (listed) n = (uint32_t)lua_rawlen(L, -1);
+    else if (!lv_get_u32(L, -1, &n)) lv_desc_error(L, "continuous", "a sensor count or a list of sensor tables");
+    if (n > VERVE_MAX_CONTINUOUS_SENSORS)
+        luaL_error(L, "verve: agent: %d continuous sensors; at most %d", (int)n, VERVE_MAX_CONTINUOUS_SENSORS);
+    for (i = 0; i < n; ++i) {
+        d->continuous_sensor_circular[i] = 0;
+        if (!listed) continue;
+        lua_rawgeti(L, -1, (int)i + 1);
+        if (!lua_istable(L, -1)) lv_desc_error(L, "continuous", "a list of sensor tables like {circular = true}");
+        lv_check_keys(L, -1, lv_sensor_keys, "agent", "continuous sensor");
+        lua_getfield(L, -1, "circular");
+        if (!lua_isnil(L, -1) && !lua_isboolean(L, -1)) lv_desc_error(L, "circular", "a boolean");
+        d->continuous_sensor_circular[i] = (uint8_t)(lua_toboolean(L, -1) ? 1 : 0);
+        lua_pop(L, 2);
+    }
+    d->num_continuous_sensors = n;
+}
+
+/* The table at idx over the library defaults; unknown fields and wrong types are errors. */
+static void lv_read_desc(lua_State* L, int idx, verve_agent_desc* d) {
+    idx = lua_absindex(L, idx);
+    luaL_checktype(L, idx, LUA_TTABLE);
+    verve_agent_desc_default(d);
+    lua_pushnil(L);
+    while (lua_next(L, idx)) {
+        const char* key;
+        size_t i = 0;
+        if (lua_type(L, -2) != LUA_TSTRING)
+            luaL_error(L, "verve: agent: descriptor fields are names (got a %s key)", luaL_typename(L, -2));
+        key = lua_tostring(L, -2);
+        if (strcmp(key, "discrete") == 0) {
+            lv_read_discrete_sensors(L, d);
+        } else if (strcmp(key, "continuous") == 0) {
+            lv_read_continuous_sensors(L, d);
+        } else {
+            while (i < LV_FIELD_COUNT && strcmp(lv_fields[i].name, key) != 0) ++i;
+            if (i == LV_FIELD_COUNT) luaL_error(L, "verve: agent: unknown descriptor field '%s'", key);
+            lv_read_field(L, &lv_fields[i], d);
+        }
+        lua_pop(L, 1);
+    }
+}
+
+static void lv_push_desc(lua_State* L, const verve_agent_desc* d) {
+    uint32_t i;
+    size_t f;
+    lua_createtable(L, 0, (int)LV_FIELD_COUNT + 2);
+    lua_createtable(L, (int)d->num_discrete_sensors, 0);
+    for (i = 0; i < d->num_discrete_sensors && i < VERVE_MAX_DISCRETE_SENSORS; ++i) {
+        lua_pushinteger(L, (lua_Integer)d->discrete_sensor_values[i]);
+        lua_rawseti(L, -2, (int)i + 1);
+    }
+    lua_setfield(L, -2, "discrete");
+    lua_createtable(L, (int)d->num_continuous_sensors, 0);
+    for (i = 0; i < d->num_continuous_sensors && i < VERVE_MAX_CONTINUOUS_SENSORS; ++i) {
+        lua_createtable(L, 0, 1);
+        lua_pushboolean(L, d->continuous_sensor_circular[i] != 0);
+        lua_setfield(L, -2, "circular");
+        lua_rawseti(L, -2, (int)i + 1);
+    }
+    lua_setfield(L, -2, "continuous");
+    for (f = 0; f < LV_FIELD_COUNT; ++f) {
+        lv_push_field(L, &lv_fields[f], d);
+        lua_setfield(L, -2, lv_fields[f].name);
+    }
+}
+
+/* ---- observations ----------------------------------------------------------------------- */
+
+/* obs.<key> (a list of at most max numbers) into the stack; returns the count. Integers are
+ * shifted to 0-based when `discrete` is set. */
+static uint32_t lv_read_obs_list(lua_State* L, int obs, const char* fn, const char* key, int discrete,
+                                 lv_obs* o) {
+    uint32_t n, i, max = discrete ? VERVE_MAX_DISCRETE_SENSORS : VERVE_MAX_CONTINUOUS_SENSORS;
+    lua_getfield(L, obs, key);
+    if (lua_isnil(L, -1)) {
+        lua_pop(L, 1);
+        return 0;
+    }
+    if (!lua_istable(L, -1)) luaL_error(L, "verve: %s: obs.%s must be a list (got %s)", fn, key, luaL_typename(L, -1));
+    n = (uint32_t)lua_rawlen(L, -1);
+    if (n > max) luaL_error(L, "verve: %s: obs.%s has %d values; an agent has at most %d", fn, key, (int)n,
+                          (int)max);
+    for (i = 0; i < n; ++i) {
+        lua_rawgeti(L, -1, (int)i + 1);
+        if (discrete) {
+            lua_Integer v = 0;
+            if (!lv_tointeger(L, -1, &v) || v <= INT32_MIN || v > INT32_MAX)
+                luaL_error(L, "verve: %s: obs.discrete[%d] must be an integer value from 1 (got %s)", fn,
+                           (int)i + 1, luaL_typename(L, -1));
+            o->discrete[i] = (int32_t)(v - 1);
+        } else {
+            if (lua_type(L, -1) != LUA_TNUMBER)
+                luaL_error(L, "verve: %s: obs.continuous[%d] must be a number (got %s)", fn, (int)i + 1,
+                           luaL_typename(L, -1));
+            o->continuous[i] = lv_to_float(lua_tonumber(L, -1));
+        }
+        lua_pop(L, 1);
+    }
+    lua_pop(L, 1);
+    return n;
+}
+
+/* {discrete = {...}, continuous = {...}} at idx; nil means no sensors. Sizes and ranges are
+ * the library's to check, so its message reaches the script. */
+static void lv_read_obs(lua_State* L, int idx, const char* fn, lv_obs* o) {
+    o->n_discrete = o->n_continuous = 0;
+    if (lua_isnoneornil(L, idx)) return;
+    if (!lua_istable(L, idx))
+        luaL_error(L, "verve: %s: the observation must be a table {discrete = {...}, continuous = {...}} (got %s)",
+                   fn, luaL_typename(L, idx));
+    o->n_discrete = lv_read_obs_list(L, idx, fn, "discrete", 1, o);
+    o->n_continuous = lv_read_obs_list(L, idx, fn, "continuous", 0, o);
+}
+
+/* ---- module functions ------------------------------------------------------------------- */
+
+static int lv_new_agent(lua_State* L) {
+    verve_agent_desc d;
+    lv_agent* ud;
+    verve_result r;
+    lv_read_desc(L, 1, &d);
+    ud = lv_push_agent(L);
+    r = verve_agent_create(&d, &ud->handle);
+    if (r != VERVE_OK) return lv_fail(L, "agent", r);
+    return 1;
+}
+
+static int lv_load(lua_State* L) {
+    const char* path = luaL_checkstring(L, 1);
+    lv_agent* ud = lv_push_agent(L);
+    verve_result r = verve_agent_load(path, &ud->handle);
+    if (r != VERVE_OK) return lv_fail(L, "load", r);
+    return 1;
+}
+
+static int lv_load_string(lua_State* L) {
+    size_t size = 0;
+    const char* data = luaL_checklstring(L, 1, &size);
+    lv_agent* ud = lv_push_agent(L);
+    verve_result r = verve_agent_load_memory(data, size, &ud->handle);
+    if (r != VERVE_OK) return lv_fail(L, "load_string", r);
+    return 1;
+}
+
+static int lv_defaults(lua_State* L) {
+    verve_agent_desc d;
+    verve_agent_desc_default(&d);
+    lv_push_desc(L, &d);
+    return 1;
+}
+
+static int lv_version(lua_State* L) {
+    uint32_t v = verve_version();
+    lua_pushfstring(L, "%d.%d.%d", (int)(v >> 16), (int)((v >> 8) & 0xff), (int)(v & 0xff));
+    lua_pushinteger(L, (lua_Integer)v);
+    return 2;
+}
+
+/* ---- agent methods ---------------------------------------------------------------------- */
+
+static int lv_update(lua_State* L) {
+    verve_agent* a = lv_open_agent(L);
+    float reward = lv_to_float(luaL_checknumber(L, 2));
+    float dt = lv_to_float(luaL_checknumber(L, 4));
+    uint32_t action = 0;
+    lv_obs o;
+    verve_result r;
+    lv_read_obs(L, 3, "update", &o);
+    r = verve_agent_update(a, reward, o.discrete, o.n_discrete, o.continuous, o.n_continuous, dt, &action);
+    if (r != VERVE_OK) return lv_fail_indexed(L, "update", r);
+    lua_pushinteger(L, (lua_Integer)action + 1);
+    return 1;
+}
+
+static int lv_end_episode(lua_State* L) {
+    verve_agent* a = lv_open_agent(L);
+    verve_result r = verve_agent_end_episode(a, lv_to_float(luaL_checknumber(L, 2)));
+    if (r != VERVE_OK) return lv_fail(L, "end_episode", r);
+    return 0;
+}
+
+static int lv_reset_short_term_memory(lua_State* L) {
+    verve_result r = verve_agent_reset_short_term_memory(lv_open_agent(L));
+    if (r != VERVE_OK) return lv_fail(L, "reset_short_term_memory", r);
+    return 0;
+}
+
+static int lv_set_learning(lua_State* L) {
+    verve_agent* a = lv_open_agent(L);
+    verve_result r;
+    luaL_checktype(L, 2, LUA_TBOOLEAN);
+    r = verve_agent_set_learning(a, lua_toboolean(L, 2));
+    if (r != VERVE_OK) return lv_fail(L, "set_learning", r);
+    return 0;
+}
+
+static int lv_learning(lua_State* L) {
+    int enabled = 0;
+    verve_result r = verve_agent_get_learning(lv_open_agent(L), &enabled);
+    if (r != VERVE_OK) return lv_fail(L, "learning", r);
+    lua_pushboolean(L, enabled);
+    return 1;
+}
+
+static int lv_descriptor(lua_State* L) {
+    verve_agent_desc d;
+    verve_result r;
+    verve_agent_desc_default(&d); /* sets struct_size */
+    r = verve_agent_get_desc(lv_open_agent(L), &d);
+    if (r != VERVE_OK) return lv_fail(L, "descriptor", r);
+    lv_push_desc(L, &d);
+    return 1;
+}
+
+static int lv_value(lua_State* L) {
+    float v = 0.0f;
+    verve_result r = verve_agent_get_value(lv_open_agent(L), &v);
+    if (r != VERVE_OK) return lv_fail(L, "value", r);
+    lua_pushnumber(L, (lua_Number)v);
+    return 1;
+}
+
+static int lv_td_error(lua_State* L) {
+    float v = 0.0f;
+    verve_result r = verve_agent_get_td_error(lv_open_agent(L), &v);
+    if (r != VERVE_OK) return lv_fail(L, "td_error", r);
+    lua_pushnumber(L, (lua_Number)v);
+    return 1;
+}
+
+static int lv_rbf_count(lua_State* L) {
+    uint32_t n = 0;
+    verve_result r = verve_agent_get_rbf_count(lv_open_agent(L), &n);
+    if (r != VERVE_OK) return lv_fail(L, "rbf_count", r);
+    lua_pushinteger(L, (lua_Integer)n);
+    return 1;
+}
+
+/* agent:stats([t]) fills t (or a new table): pass the same table each frame to avoid garbage. */
+static int lv_stats(lua_State* L) {
+    verve_agent* a = lv_open_agent(L);
+    verve_agent_stats s;
+    verve_result r;
+    memset(&s, 0, sizeof s);
+    s.struct_size = (uint32_t)sizeof s;
+    if (!lua_isnoneornil(L, 2)) luaL_checktype(L, 2, LUA_TTABLE);
+    r = verve_agent_get_stats(a, &s);
+    if (r != VERVE_OK) return lv_fail(L, "stats", r);
+    if (lua_istable(L, 2)) lua_settop(L, 2);
+    else lua_createtable(L, 0, 9);
+    lua_pushinteger(L, (lua_Integer)s.steps);
+    lua_setfield(L, -2, "steps");
+    lua_pushinteger(L, (lua_Integer)s.rbf_count);
+    lua_setfield(L, -2, "rbf_count");
+    lua_pushinteger(L, (lua_Integer)s.live_traces);
+    lua_setfield(L, -2, "live_traces");
+    lua_pushnumber(L, (lua_Number)s.value);
+    lua_setfield(L, -2, "value");
+    lua_pushnumber(L, (lua_Number)s.td_error);
+    lua_setfield(L, -2, "td_error");
+    lua_pushnumber(L, (lua_Number)s.model_error);
+    lua_setfield(L, -2, "model_error");
+    lua_pushnumber(L, (lua_Number)s.predicted_uncertainty);
+    lua_setfield(L, -2, "predicted_uncertainty");
+    lua_pushinteger(L, (lua_Integer)s.planning_steps);
+    lua_setfield(L, -2, "planning_steps");
+    lua_pushnumber(L, (lua_Number)s.curiosity_reward);
+    lua_setfield(L, -2, "curiosity_reward");
+    return 1;
+}
+
+static const char* const lv_axis_keys[] = {"kind", "index", "samples", NULL};
+
+/* {kind = "continuous"|"discrete", index = 1.., samples = n} on top of the stack. A discrete
+ * axis's samples default to the sensor's value count. */
+static void lv_read_axis(lua_State* L, const verve_agent_desc* d, verve_value_axis* axis) {
+    const char* kind;
+    if (!lua_istable(L, -1)) luaL_error(L, "verve: sample_values: each axis must be a table {kind=, index=, samples=}");
+    lv_check_keys(L, -1, lv_axis_keys, "sample_values", "axis");
+    lua_getfield(L, -1, "kind");
+    kind = lua_type(L, -1) == LUA_TSTRING ? lua_tostring(L, -1) : "";
+    if (strcmp(kind, "continuous") == 0) axis->kind = VERVE_SENSOR_CONTINUOUS;
+    else if (strcmp(kind, "discrete") == 0) axis->kind = VERVE_SENSOR_DISCRETE;
+    else luaL_error(L, "verve: sample_values: axis kind must be \"continuous\" or \"discrete\"");
+    lua_pop(L, 1);
+    lua_getfield(L, -1, "index");
+    if (!lv_get_u32(L, -1, &axis->index) || axis->index == 0)
+        luaL_error(L, "verve: sample_values: axis index must be an integer from 1 (got %s)", luaL_typename(L, -1));
+    axis->index -= 1;
+    lua_pop(L, 1);
+    lua_getfield(L, -1, "samples");
+    if (lua_isnil(L, -1) && axis->kind == VERVE_SENSOR_DISCRETE) /* no such sensor: the library says so */
+        axis->samples = axis->index < d->num_discrete_sensors ? d->discrete_sensor_values[axis->index] : 0;
+    else if (!lv_get_u32(L, -1, &axis->samples))
+        luaL_error(L, "verve: sample_values: axis samples must be a non-negative integer (got %s)",
+                   luaL_typename(L, -1));
+    lua_pop(L, 1);
+}
+
+/* agent:sample_values(axes, [base]) -> V over 1 or 2 swept sensors, the others held at base
+ * (default: every discrete sensor at 1, every continuous at 0). One axis gives a list;
+ * two give t[i][j], i along the first axis and j along the second. */
+static int lv_sample_values(lua_State* L) {
+    verve_agent* a = lv_open_agent(L);
+    verve_agent_desc d;
+    verve_value_axis axes[2];
+    uint32_t n_axes, i, j, n0, n1;
+    uint64_t total;
+    lv_obs base;
+    float* out;
+    verve_result r;
+    verve_agent_desc_default(&d);
+    r = verve_agent_get_desc(a, &d);
+    if (r != VERVE_OK) return lv_fail(L, "sample_values", r);
+    luaL_checktype(L, 2, LUA_TTABLE);
+    n_axes = (uint32_t)lua_rawlen(L, 2);
+    if (n_axes < 1 || n_axes > 2) luaL_error(L, "verve: sample_values: give 1 or 2 axes (got %d)", (int)n_axes);
+    for (i = 0; i < n_axes; ++i) {
+        lua_rawgeti(L, 2, (int)i + 1);
+        lv_read_axis(L, &d, &axes[i]);
+        lua_pop(L, 1);
+    }
+    if (lua_isnoneornil(L, 3)) {
+        memset(&base, 0, sizeof base);
+        base.n_discrete = d.num_discrete_sensors;
+        base.n_continuous = d.num_continuous_sensors;
+    } else {
+        lv_read_obs(L, 3, "sample_values", &base);
+    }
+    n0 = axes[0].samples;
+    n1 = n_axes == 2 ? axes[1].samples : 1;
+    total = (uint64_t)n0 * n1;
+    if (total > LV_MAX_SAMPLES) luaL_error(L, "verve: sample_values: more than %d samples", (int)LV_MAX_SAMPLES);
+    out = (float*)lua_newuserdata(L, (size_t)(total ? total : 1) * sizeof(float)); /* collected by Lua */
+    r = verve_agent_sample_values(a, axes, n_axes, base.discrete, base.n_discrete, base.continuous,
+                                  base.n_continuous, out, (uint32_t)total);
+    if (r != VERVE_OK) return lv_fail_indexed(L, "sample_values", r);
+    lua_createtable(L, (int)n0, 0);
+    for (i = 0; i < n0; ++i) {
+        if (n_axes == 1) {
+            lua_pushnumber(L, (lua_Number)out[i]);
+        } else {
+            lua_createtable(L, (int)n1, 0);
+            for (j = 0; j < n1; ++j) {
+                lua_pushnumber(L, (lua_Number)out[(size_t)j * n0 + i]); /* axis 0 fastest in C */
+                lua_rawseti(L, -2, (int)j + 1);
+            }
+        }
+        lua_rawseti(L, -2, (int)i + 1);
+    }
+    return 1;
+}
+
+static int lv_save(lua_State* L) {
+    verve_agent* a = lv_open_agent(L);
+    verve_result r = verve_agent_save(a, luaL_checkstring(L, 2));
+    if (r != VERVE_OK) return lv_fail(L, "save", r);
+    return 0;
+}
+
+static int lv_save_string(lua_State* L) {
+    verve_agent* a = lv_open_agent(L);
+    size_t size = 0;
+    void* buffer;
+    verve_result r = verve_agent_save_memory(a, NULL, &size);
+    if (r != VERVE_OK && r != VERVE_ERROR_BUFFER_TOO_SMALL) return lv_fail(L, "save_string", r);
+    buffer = lua_newuserdata(L, size ? size : 1); /* collected by Lua, even if a later call errors */
+    r = verve_agent_save_memory(a, buffer, &size);
+    if (r != VERVE_OK) return lv_fail(L, "save_string", r);
+    lua_pushlstring(L, (const char*)buffer, size);
+    return 1;
+}
+
+/* close, __gc and __close: idempotent. */
+static int lv_close(lua_State* L) {
+    lv_agent* ud = (lv_agent*)luaL_checkudata(L, 1, LV_AGENT_MT);
+    verve_agent_destroy(ud->handle);
+    ud->handle = NULL;
+    return 0;
+}
+
+static int lv_tostring(lua_State* L) {
+    lv_agent* ud = (lv_agent*)luaL_checkudata(L, 1, LV_AGENT_MT);
+    verve_agent_desc d;
+    verve_agent_desc_default(&d);
+    if (!ud->handle) {
+        lua_pushfstring(L, "verve.agent (closed): %p", (void*)ud);
+    } else if (verve_agent_get_desc(ud->handle, &d) == VERVE_OK) {
+        lua_pushfstring(L, "verve.agent (%d discrete, %d continuous sensors, %d actions): %p",
+                        (int)d.num_discrete_sensors, (int)d.num_continuous_sensors, (int)d.num_actions,
+                        (void*)ud);
+    } else {
+        lua_pushfstring(L, "verve.agent: %p", (void*)ud);
+    }
+    return 1;
+}
+
+static const luaL_Reg lv_agent_methods[] = {
+    {"update", lv_update},
+    {"end_episode", lv_end_episode},
+    {"reset_short_term_memory", lv_reset_short_term_memory},
+    {"set_learning", lv_set_learning},
+    {"learning", lv_learning},
+    {"descriptor", lv_descriptor},
+    {"value", lv_value},
+    {"td_error", lv_td_error},
+    {"rbf_count", lv_rbf_count},
+    {"stats", lv_stats},
+    {"sample_values", lv_sample_values},
+    {"save", lv_save},
+    {"save_string", lv_save_string},
+    {"close", lv_close},
+    {NULL, NULL},
+};
+
+static const luaL_Reg lv_agent_meta[] = {
+    {"__gc", lv_close},
+    {"__close", lv_close}, /* Lua 5.4 to-be-closed variables; ignored by LuaJIT */
+    {"__tostring", lv_tostring},
+    {NULL, NULL},
+};
+
+static const luaL_Reg lv_module[] = {
+    {"agent", lv_new_agent},
+    {"load", lv_load},
+    {"load_string", lv_load_string},
+    {"defaults", lv_defaults},
+    {"version", lv_version},
+    {NULL, NULL},
+};
+
+LV_EXPORT int luaopen_verve(lua_State* L) {
+    uint32_t v = verve_version();
+    /* A library with another major version, or older than this header, may lack what we call. */
+    if ((v >> 16) != VERVE_VERSION_MAJOR || v < VERVE_VERSION_NUMBER)
+        return luaL_error(L, "verve: the module needs libverve %d.%d.x (>= %d.%d.%d) but found %d.%d.%d",
+                          VERVE_VERSION_MAJOR, VERVE_VERSION_MINOR, VERVE_VERSION_MAJOR, VERVE_VERSION_MINOR,
+                          VERVE_VERSION_PATCH, (int)(v >> 16), (int)((v >> 8) & 0xff), (int)(v & 0xff));
+    luaL_newmetatable(L, LV_AGENT_MT);
+    luaL_setfuncs(L, lv_agent_meta, 0);
+    luaL_newlib(L, lv_agent_methods);
+    lua_setfield(L, -2, "__index");
+    lua_pushliteral(L, LV_AGENT_MT);
+    lua_setfield(L, -2, "__name"); /* Lua 5.4 sets it too; LuaJIT's error messages use it */
+    lua_pop(L, 1);
+    luaL_newlib(L, lv_module);
+    return 1;
+}

@@ -1,0 +1,59 @@
+-- Save and load, to a file and to a string: the loaded agent acts exactly as the original.
+local T = require "helpers"
+local verve = require "verve"
+
+local function trained(desc, steps)
+  local agent = verve.agent(desc)
+  T.drive(agent, 1, steps)
+  agent:end_episode(1)
+  T.drive(agent, steps + 1, steps)
+  return agent
+end
+
+-- Both agents must be indistinguishable from here on.
+local function assert_twins(a, b)
+  local da, db = a:descriptor(), b:descriptor()
+  for k, v in pairs(da) do
+    if type(v) ~= "table" then assert(db[k] == v, k) end
+  end
+  local sa, sb = a:stats(), b:stats()
+  assert(sa.steps == sb.steps and sa.rbf_count == sb.rbf_count, "stats differ")
+  assert(a:learning() == b:learning())
+  local axis = { { kind = "continuous", index = 1, samples = 9 }, { kind = "continuous", index = 2, samples = 5 } }
+  local va, vb = a:sample_values(axis), b:sample_values(axis)
+  for i = 1, 9 do
+    for j = 1, 5 do assert(va[i][j] == vb[i][j], "value function differs") end
+  end
+  assert(T.same_list(T.drive(a, 1000, 300), T.drive(b, 1000, 300)), "actions differ after loading")
+end
+
+T.check("save_string / load_string round trip gives identical actions", function()
+  local agent = trained(T.MIXED, 120)
+  local text = agent:save_string()
+  assert(type(text) == "string" and #text > 100)
+  local copy = verve.load_string(text)
+  assert(copy:save_string() == text, "saving the copy gives the same bytes")
+  assert_twins(agent, copy)
+end)
+
+T.check("save / load through a file gives identical actions", function()
+  local agent = trained(T.desc(T.MIXED, { planning = true, curiosity = "novelty" }), 80)
+  agent:set_learning(false)
+  local path = T.temp_path()
+  agent:save(path)
+  local copy = verve.load(path)
+  os.remove(path)
+  assert(copy:learning() == false, "the learning switch is saved")
+  assert_twins(agent, copy)
+end)
+
+T.check("saving overwrites a previous save", function()
+  local path = T.temp_path()
+  verve.agent(T.GRID):save(path)
+  local agent = trained(T.MIXED, 30)
+  agent:save(path)
+  local copy = verve.load(path)
+  os.remove(path)
+  assert(#copy:descriptor().continuous == 2)
+  assert_twins(agent, copy)
+end)
