@@ -1,0 +1,26 @@
+#!/usr/bin/env bash
+# Installs the Debian packages Verve builds and tests with (only the missing ones: fast when all
+# are present). Needs root or sudo on a fresh machine.
+set -euo pipefail
+
+packages=(
+  build-essential cmake pkg-config
+  libeigen3-dev libbullet-dev libpugixml-dev libcli11-dev
+  googletest libgtest-dev libbenchmark-dev
+  liblua5.4-dev lua5.4 luajit libluajit-5.1-dev
+  gnuplot-nox
+)
+
+missing=()
+for p in "${packages[@]}"; do
+  dpkg -s "$p" >/dev/null 2>&1 || missing+=("$p")
+done
+
+if [ ${#missing[@]} -gt 0 ]; then
+  echo "setup: installing ${missing[*]}"
+  sudo_cmd=()
+  [ "$(id -u)" -eq 0 ] || sudo_cmd=(sudo)
+  export DEBIAN_FRONTEND=noninteractive
+  "${sudo_cmd[@]}" apt-get update -qq
+  "${sudo_cmd[@]}" apt-get install -y -qq --no-install-recommends "${missing[@]}" >/dev/null
+fi

@@ -1,0 +1,19 @@
+#!/usr/bin/env bash
+# Sets up, builds and runs every test suite: C++ core, learning, tasks, scenes, C ABI and Lua
+# (CTest), then the C# binding (dotnet test) against the freshly built libverve.so.
+set -euo pipefail
+cd "$(dirname "$0")/.."
+
+./scripts/setup.sh
+./scripts/build.sh
+
+echo "== C++, C ABI and Lua suites (ctest)"
+ctest --test-dir build --output-on-failure -j"$(nproc)"
+
+echo "== C# binding (dotnet test)"
+if ! command -v dotnet >/dev/null 2>&1; then
+  echo "test.sh: the .NET SDK (dotnet) is not installed; the C# suite cannot run." >&2
+  echo "Install the .NET SDK (https://learn.microsoft.com/dotnet/core/install/linux-debian) and rerun." >&2
+  exit 1
+fi
+bindings/csharp/test.sh "$PWD/build/src/capi"
