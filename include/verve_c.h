@@ -107,6 +107,12 @@ typedef struct verve_agent_desc {
     float curiosity_factor;                /* default 3 */
 } verve_agent_desc;
 
+/* The sizes of verve_agent_desc a library accepts in struct_size: each release's full struct.
+ * V1 ended after `seed` (no planning fields); V2 is the current struct. Fields beyond a smaller
+ * struct_size take their defaults. Any other size is refused. */
+#define VERVE_AGENT_DESC_SIZE_V1 ((uint32_t)offsetof(verve_agent_desc, planning))
+#define VERVE_AGENT_DESC_SIZE_V2 ((uint32_t)sizeof(verve_agent_desc))
+
 typedef struct verve_agent_stats {
     uint32_t struct_size;           /* set by the caller to sizeof(verve_agent_stats) */
     uint64_t steps;                 /* real updates since creation */
@@ -132,7 +138,11 @@ VERVE_API const char* VERVE_CALL verve_last_error(void); /* never NULL; "" after
 VERVE_API const char* VERVE_CALL verve_result_name(verve_result result);
 
 /* ---- agents ----------------------------------------------------------------------------- */
-VERVE_API void VERVE_CALL verve_agent_desc_default(verve_agent_desc* desc);
+VERVE_API void VERVE_CALL verve_agent_desc_default(verve_agent_desc* desc); /* NULL is ignored */
+/* Defaults for a struct of struct_size bytes (one of the VERVE_AGENT_DESC_SIZE_* values): writes
+ * only that many bytes, so a host built against an older header may call it with sizeof(its struct)
+ * on any newer library. verve_agent_desc_default(d) is verve_agent_desc_init(d, sizeof *d). */
+VERVE_API verve_result VERVE_CALL verve_agent_desc_init(verve_agent_desc* desc, uint32_t struct_size);
 VERVE_API verve_result VERVE_CALL verve_agent_create(const verve_agent_desc* desc, verve_agent** out);
 VERVE_API void VERVE_CALL verve_agent_destroy(verve_agent* agent); /* NULL is ignored */
 
@@ -147,6 +157,7 @@ VERVE_API verve_result VERVE_CALL verve_agent_end_episode(verve_agent* agent, fl
 VERVE_API verve_result VERVE_CALL verve_agent_reset_short_term_memory(verve_agent* agent);
 VERVE_API verve_result VERVE_CALL verve_agent_set_learning(verve_agent* agent, int enabled);
 VERVE_API verve_result VERVE_CALL verve_agent_get_learning(const verve_agent* agent, int* out_enabled);
+/* out->struct_size must be set (verve_agent_desc_init does it); only that many bytes are written. */
 VERVE_API verve_result VERVE_CALL verve_agent_get_desc(const verve_agent* agent, verve_agent_desc* out);
 
 /* ---- read-outs -------------------------------------------------------------------------- */

@@ -1,0 +1,132 @@
+#include "capi/capi_desc.hpp"
+
+#include <cstring>
+#include <string>
+
+#include "verve/error.hpp"
+
+namespace verve::capi {
+namespace {
+
+[[noreturn]] void refuse(const std::string& message) { throw Error(ErrorCode::InvalidArgument, message); }
+
+void requireKnownSize(std::uint32_t size) {
+    if (!isKnownDescSize(size)) {
+        refuse("struct_size " + std::to_string(size) + " is not a verve_agent_desc size this library knows (" +
+               std::to_string(VERVE_AGENT_DESC_SIZE_V1) + " or " + std::to_string(VERVE_AGENT_DESC_SIZE_V2) +
+               "); fill the struct with verve_agent_desc_init");
+    }
+}
+
+void requireFlag(std::uint32_t value, const std::string& name) {
+    if (value > 1) refuse(name + " must be 0 or 1, not " + std::to_string(value));
+}
+
+}  // namespace
+
+bool isKnownDescSize(std::uint32_t size) noexcept {
+    return size == VERVE_AGENT_DESC_SIZE_V1 || size == VERVE_AGENT_DESC_SIZE_V2;
+}
+
+verve_agent_desc defaultDesc() noexcept {
+    verve_agent_desc d;
+    std::memset(&d, 0, sizeof d);  // also the padding, so the bytes are deterministic
+    const AgentDescriptor defaults;  // one source of truth for defaults: the C++ descriptor
+    d.struct_size = sizeof d;
+    d.resolution = defaults.resolution;
+    d.num_actions = defaults.numActions;
+    d.rbf_allocation = static_cast<std::uint32_t>(defaults.allocation);
+    d.tau_value = defaults.tauValue;
+    d.tau_discount = defaults.tauDiscount;
+    d.tau_eligibility = defaults.tauEligibility;
+    d.policy_multiplier = defaults.policyMultiplier;
+    d.trace_threshold = defaults.traceThreshold;
+    d.seed = defaults.seed;
+    d.planning = defaults.planning ? 1u : 0u;
+    d.tau_model = defaults.tauModel;
+    d.max_planning_steps = defaults.maxPlanningSteps;
+    d.planning_uncertainty_threshold = defaults.planningUncertaintyThreshold;
+    d.curiosity = static_cast<std::uint32_t>(defaults.curiosity);
+    d.curiosity_factor = defaults.curiosityFactor;
+    return d;
+}
+
+void initDesc(verve_agent_desc& out, std::uint32_t size) {
+    requireKnownSize(size);
+    verve_agent_desc d = defaultDesc();
+    d.struct_size = size;
+    std::memcpy(&out, &d, size);
+}
+
+AgentDescriptor toDescriptor(const verve_agent_desc& in) {
+    requireKnownSize(in.struct_size);
+    verve_agent_desc d = defaultDesc();
+    std::memcpy(&d, &in, in.struct_size);
+
+    if (d.num_discrete_sensors > VERVE_MAX_DISCRETE_SENSORS) {
+        refuse("num_discrete_sensors is " + std::to_string(d.num_discrete_sensors) + ", at most " +
+               std::to_string(VERVE_MAX_DISCRETE_SENSORS));
+    }
+    if (d.num_continuous_sensors > VERVE_MAX_CONTINUOUS_SENSORS) {
+        refuse("num_continuous_sensors is " + std::to_string(d.num_continuous_sensors) + ", at most " +
+               std::to_string(VERVE_MAX_CONTINUOUS_SENSORS));
+    }
+    requireFlag(d.rbf_allocation, "rbf_allocation");
+    requireFlag(d.planning, "planning");
+    if (d.curiosity > VERVE_CURIOSITY_PROGRESS) refuse("curiosity must be 0, 1 or 2, not " + std::to_string(d.curiosity));
+
+    AgentDescriptor out;
+    for (std::uint32_t i = 0; i < d.num_discrete_sensors; ++i) out.addDiscreteSensor(d.discrete_sensor_values[i]);
+    for (std::uint32_t i = 0; i < d.num_continuous_sensors; ++i) {
+        requireFlag(d.continuous_sensor_circular[i], "continuous_sensor_circular[" + std::to_string(i) + "]");
+        out.addContinuousSensor(d.continuous_sensor_circular[i] != 0);
+    }
+    out.resolution = d.resolution;
+    out.numActions = d.num_actions;
+    out.allocation = static_cast<RbfAllocation>(d.rbf_allocation);
+    out.tauValue = d.tau_value;
+    out.tauDiscount = d.tau_discount;
+    out.tauEligibility = d.tau_eligibility;
+    out.policyMultiplier = d.policy_multiplier;
+    out.traceThreshold = d.trace_threshold;
+    out.seed = d.seed;
+    out.planning = d.planning != 0;
+    out.tauModel = d.tau_model;
+    out.maxPlanningSteps = d.max_planning_steps;
+    out.planningUncertaintyThreshold = d.planning_uncertainty_threshold;
+    out.curiosity = static_cast<CuriosityMode>(d.curiosity);
+    out.curiosityFactor = d.curiosity_factor;
+    out.validate();
+    return out;
+}
+
+void writeDesc(const AgentDescriptor& in, verve_agent_desc& out) {
+    const std::uint32_t size = out.struct_size;
+    requireKnownSize(size);
+    verve_agent_desc d = defaultDesc();
+    d.struct_size = size;
+    d.num_discrete_sensors = static_cast<std::uint32_t>(in.discreteSensors.size());
+    for (std::size_t i = 0; i < in.discreteSensors.size(); ++i) d.discrete_sensor_values[i] = in.discreteSensors[i];
+    d.num_continuous_sensors = static_cast<std::uint32_t>(in.continuousSensors.size());
+    for (std::size_t i = 0; i < in.continuousSensors.size(); ++i) {
+        d.continuous_sensor_circular[i] = in.continuousSensors[i].circular ? 1 : 0;
+    }
+    d.resolution = in.resolution;
+    d.num_actions = in.numActions;
+    d.rbf_allocation = static_cast<std::uint32_t>(in.allocation);
+    d.tau_value = in.tauValue;
+    d.tau_discount = in.tauDiscount;
+    d.tau_eligibility = in.tauEligibility;
+    d.policy_multiplier = in.policyMultiplier;
+    d.trace_threshold = in.traceThreshold;
+    d.seed = in.seed;
+    d.planning = in.planning ? 1u : 0u;
+    d.tau_model = in.tauModel;
+    d.max_planning_steps = in.maxPlanningSteps;
+    d.planning_uncertainty_threshold = in.planningUncertaintyThreshold;
+    d.curiosity = static_cast<std::uint32_t>(in.curiosity);
+    d.curiosity_factor = in.curiosityFactor;
+    std::memcpy(&out, &d, size);
+}
+
+}  // namespace verve::capi

@@ -1,0 +1,72 @@
+// Agent life cycle and stepping.
+#include "capi/capi_agent.hpp"
+#include "capi/capi_desc.hpp"
+
+using verve::capi::agentOf;
+using verve::capi::guarded;
+using verve::capi::requireArg;
+
+extern "C" {
+
+VERVE_API void VERVE_CALL verve_agent_desc_default(verve_agent_desc* desc) {
+    if (desc != nullptr) *desc = verve::capi::defaultDesc();
+}
+
+VERVE_API verve_result VERVE_CALL verve_agent_desc_init(verve_agent_desc* desc, uint32_t struct_size) {
+    return guarded(__func__, [&] {
+        requireArg(desc, "desc");
+        verve::capi::initDesc(*desc, struct_size);
+    });
+}
+
+VERVE_API verve_result VERVE_CALL verve_agent_create(const verve_agent_desc* desc, verve_agent** out) {
+    return guarded(__func__, [&] {
+        requireArg(desc, "desc");
+        requireArg(out, "out");
+        verve::capi::handOut(verve::Agent(verve::capi::toDescriptor(*desc)), out);
+    });
+}
+
+VERVE_API void VERVE_CALL verve_agent_destroy(verve_agent* agent) { delete agent; }
+
+VERVE_API verve_result VERVE_CALL verve_agent_update(verve_agent* agent, float reward, const int32_t* discrete,
+                                                     uint32_t n_discrete, const float* continuous,
+                                                     uint32_t n_continuous, float dt, uint32_t* out_action) {
+    return guarded(__func__, [&] {
+        verve::Agent& a = agentOf(agent);
+        requireArg(out_action, "out_action");
+        if (n_discrete > 0) requireArg(discrete, "discrete (with n_discrete > 0)");
+        if (n_continuous > 0) requireArg(continuous, "continuous (with n_continuous > 0)");
+        *out_action = a.update(reward, verve::ObservationView{discrete, n_discrete, continuous, n_continuous}, dt);
+    });
+}
+
+VERVE_API verve_result VERVE_CALL verve_agent_end_episode(verve_agent* agent, float final_reward) {
+    return guarded(__func__, [&] { agentOf(agent).endEpisode(final_reward); });
+}
+
+VERVE_API verve_result VERVE_CALL verve_agent_reset_short_term_memory(verve_agent* agent) {
+    return guarded(__func__, [&] { agentOf(agent).resetShortTermMemory(); });
+}
+
+VERVE_API verve_result VERVE_CALL verve_agent_set_learning(verve_agent* agent, int enabled) {
+    return guarded(__func__, [&] { agentOf(agent).setLearning(enabled != 0); });
+}
+
+VERVE_API verve_result VERVE_CALL verve_agent_get_learning(const verve_agent* agent, int* out_enabled) {
+    return guarded(__func__, [&] {
+        const verve::Agent& a = agentOf(agent);
+        requireArg(out_enabled, "out_enabled");
+        *out_enabled = a.learning() ? 1 : 0;
+    });
+}
+
+VERVE_API verve_result VERVE_CALL verve_agent_get_desc(const verve_agent* agent, verve_agent_desc* out) {
+    return guarded(__func__, [&] {
+        const verve::Agent& a = agentOf(agent);
+        requireArg(out, "out");
+        verve::capi::writeDesc(a.descriptor(), *out);
+    });
+}
+
+}  // extern "C"

@@ -1,0 +1,54 @@
+// Saving and loading agents: XML files (atomic) and memory buffers (two-call size pattern).
+#include <cstring>
+#include <string>
+
+#include "capi/capi_agent.hpp"
+#include "verve/io.hpp"
+
+using verve::capi::agentOf;
+using verve::capi::guarded;
+using verve::capi::requireArg;
+
+extern "C" {
+
+VERVE_API verve_result VERVE_CALL verve_agent_save(const verve_agent* agent, const char* path) {
+    return guarded(__func__, [&] {
+        const verve::Agent& a = agentOf(agent);
+        requireArg(path, "path");
+        verve::saveAgent(a, path);
+    });
+}
+
+VERVE_API verve_result VERVE_CALL verve_agent_load(const char* path, verve_agent** out) {
+    return guarded(__func__, [&] {
+        requireArg(path, "path");
+        requireArg(out, "out");
+        verve::capi::handOut(verve::loadAgent(path), out);
+    });
+}
+
+VERVE_API verve_result VERVE_CALL verve_agent_save_memory(const verve_agent* agent, void* buffer, size_t* size) {
+    return guarded(__func__, [&] {
+        const verve::Agent& a = agentOf(agent);
+        requireArg(size, "size");
+        const std::string xml = verve::saveAgentToString(a);
+        const size_t capacity = *size;
+        *size = xml.size();
+        if (buffer == nullptr) return;  // the size query
+        if (capacity < xml.size()) {
+            throw verve::Error(verve::ErrorCode::BufferTooSmall, "the buffer holds " + std::to_string(capacity) +
+                                                                     " bytes, the save needs " + std::to_string(xml.size()));
+        }
+        std::memcpy(buffer, xml.data(), xml.size());
+    });
+}
+
+VERVE_API verve_result VERVE_CALL verve_agent_load_memory(const void* data, size_t size, verve_agent** out) {
+    return guarded(__func__, [&] {
+        requireArg(data, "data");
+        requireArg(out, "out");
+        verve::capi::handOut(verve::loadAgentFromMemory(static_cast<const char*>(data), size), out);
+    });
+}
+
+}  // extern "C"

@@ -1,0 +1,97 @@
+// Read-outs: value, TD error, RBF count, statistics, value-function images.
+#include <string>
+#include <vector>
+
+#include "capi/capi_agent.hpp"
+
+using verve::capi::agentOf;
+using verve::capi::guarded;
+using verve::capi::requireArg;
+
+namespace {
+
+verve::ValueAxis toAxis(const verve_value_axis& axis, uint32_t i) {
+    if (axis.kind != VERVE_SENSOR_DISCRETE && axis.kind != VERVE_SENSOR_CONTINUOUS) {
+        throw verve::Error(verve::ErrorCode::InvalidArgument,
+                           "axes[" + std::to_string(i) + "].kind must be VERVE_SENSOR_DISCRETE or VERVE_SENSOR_CONTINUOUS");
+    }
+    verve::ValueAxis out;
+    out.kind = axis.kind == VERVE_SENSOR_DISCRETE ? verve::SensorKind::Discrete : verve::SensorKind::Continuous;
+    out.index = axis.index;
+    out.samples = axis.samples;
+    return out;
+}
+
+}  // namespace
+
+extern "C" {
+
+VERVE_API verve_result VERVE_CALL verve_agent_get_value(const verve_agent* agent, float* out_value) {
+    return guarded(__func__, [&] {
+        const verve::Agent& a = agentOf(agent);
+        requireArg(out_value, "out_value");
+        *out_value = a.valueEstimate();
+    });
+}
+
+VERVE_API verve_result VERVE_CALL verve_agent_get_td_error(const verve_agent* agent, float* out_td_error) {
+    return guarded(__func__, [&] {
+        const verve::Agent& a = agentOf(agent);
+        requireArg(out_td_error, "out_td_error");
+        *out_td_error = a.tdError();
+    });
+}
+
+VERVE_API verve_result VERVE_CALL verve_agent_get_rbf_count(const verve_agent* agent, uint32_t* out_count) {
+    return guarded(__func__, [&] {
+        const verve::Agent& a = agentOf(agent);
+        requireArg(out_count, "out_count");
+        *out_count = static_cast<uint32_t>(a.rbfCount());
+    });
+}
+
+VERVE_API verve_result VERVE_CALL verve_agent_get_stats(const verve_agent* agent, verve_agent_stats* out) {
+    return guarded(__func__, [&] {
+        const verve::Agent& a = agentOf(agent);
+        requireArg(out, "out");
+        if (out->struct_size != sizeof(verve_agent_stats)) {
+            throw verve::Error(verve::ErrorCode::InvalidArgument,
+                               "out->struct_size is " + std::to_string(out->struct_size) + ", expected sizeof(verve_agent_stats) = " +
+                                   std::to_string(sizeof(verve_agent_stats)));
+        }
+        const verve::AgentStats s = a.stats();
+        out->steps = s.steps;
+        out->rbf_count = s.rbfCount;
+        out->live_traces = s.liveTraces;
+        out->value = s.value;
+        out->td_error = s.tdError;
+        out->model_error = s.modelError;
+        out->predicted_uncertainty = s.predictedUncertainty;
+        out->planning_steps = s.planningSteps;
+        out->curiosity_reward = s.curiosityReward;
+    });
+}
+
+VERVE_API verve_result VERVE_CALL verve_agent_sample_values(const verve_agent* agent, const verve_value_axis* axes,
+                                                            uint32_t n_axes, const int32_t* base_discrete,
+                                                            uint32_t n_discrete, const float* base_continuous,
+                                                            uint32_t n_continuous, float* out, uint32_t out_count) {
+    return guarded(__func__, [&] {
+        const verve::Agent& a = agentOf(agent);
+        requireArg(axes, "axes");
+        requireArg(out, "out");
+        if (n_discrete > 0) requireArg(base_discrete, "base_discrete (with n_discrete > 0)");
+        if (n_continuous > 0) requireArg(base_continuous, "base_continuous (with n_continuous > 0)");
+        if (n_axes < 1 || n_axes > 2) {
+            throw verve::Error(verve::ErrorCode::InvalidArgument, "n_axes must be 1 or 2, not " + std::to_string(n_axes));
+        }
+        std::vector<verve::ValueAxis> swept;
+        for (uint32_t i = 0; i < n_axes; ++i) swept.push_back(toAxis(axes[i], i));
+        verve::Observation base;
+        base.discrete.assign(base_discrete, base_discrete + n_discrete);
+        base.continuous.assign(base_continuous, base_continuous + n_continuous);
+        a.sampleValueFunction(swept, base, out, out_count);
+    });
+}
+
+}  // extern "C"

@@ -1,0 +1,125 @@
+#include "io/snapshot_check.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <string>
+
+#include "verve/error.hpp"
+
+namespace verve::io {
+namespace {
+
+[[noreturn]] void fail(const std::string& message) { throw Error(ErrorCode::Format, message); }
+
+void requireSize(const char* field, std::size_t actual, std::size_t expected, const char* why) {
+    if (actual != expected) {
+        fail(std::string(field) + " holds " + std::to_string(actual) + " values, expected " +
+             std::to_string(expected) + " (" + why + ")");
+    }
+}
+
+void requireFinite(const char* field, const std::vector<float>& values) {
+    for (std::size_t i = 0; i < values.size(); ++i) {
+        if (!std::isfinite(values[i])) fail(std::string(field) + "[" + std::to_string(i) + "] is not a finite number");
+    }
+}
+
+void requireBelow(const char* field, const std::vector<std::uint32_t>& values, std::uint64_t limit,
+                  const char* what) {
+    for (std::size_t i = 0; i < values.size(); ++i) {
+        if (values[i] >= limit) {
+            fail(std::string(field) + "[" + std::to_string(i) + "] = " + std::to_string(values[i]) +
+                 " is out of range (" + what + " is " + std::to_string(limit) + ")");
+        }
+    }
+}
+
+void requireUnique(const char* field, std::vector<std::uint32_t> values) {
+    std::sort(values.begin(), values.end());
+    const auto dup = std::adjacent_find(values.begin(), values.end());
+    if (dup != values.end()) fail(std::string(field) + " lists feature " + std::to_string(*dup) + " twice");
+}
+
+std::uint64_t discreteCombinations(const AgentDescriptor& d) {
+    std::uint64_t n = 1;
+    for (auto c : d.discreteSensors) n *= c;  // bounded by validate() (<= 9e15)
+    return n;
+}
+
+void checkDescriptor(const AgentDescriptor& d) {
+    try {
+        d.validate();
+    } catch (const Error& e) {
+        fail(std::string("descriptor: ") + e.what());
+    }
+}
+
+void checkFeatures(const AgentSnapshot& s) {
+    const std::size_t features = s.featureKeys.size();
+    const std::size_t nc = s.descriptor.continuousSensors.size();
+    if (features > UINT32_MAX) fail("too many features");
+    const std::uint64_t combos = discreteCombinations(s.descriptor);
+    for (std::size_t i = 0; i < features; ++i) {
+        if (s.featureKeys[i] >= combos) {
+            fail("featureKeys[" + std::to_string(i) + "] = " + std::to_string(s.featureKeys[i]) +
+                 " is out of range (the descriptor has " + std::to_string(combos) + " discrete combinations)");
+        }
+    }
+    requireSize("centres", s.centres.size(), features * nc, "features x continuous sensors");
+    for (std::size_t i = 0; i < s.centres.size(); ++i) {
+        if (!(std::fabs(s.centres[i]) <= 1.0f)) {  // also refuses NaN
+            fail("centres[" + std::to_string(i) + "] is not a number in [-1, 1]");
+        }
+    }
+    if (features > 0 && s.stride == 0) fail("weight stride is 0");
+    requireSize("weights", s.weights.size(), features * s.stride, "features x stride");
+    requireFinite("weights", s.weights);
+}
+
+void checkTraces(const AgentSnapshot& s) {
+    const std::size_t features = s.featureKeys.size();
+    requireBelow("traceFeatures", s.traceFeatures, features, "the feature count");
+    requireUnique("traceFeatures", s.traceFeatures);
+    requireSize("traces", s.traces.size(), s.traceFeatures.size() * s.traceStride, "trace features x trace stride");
+    requireFinite("traces", s.traces);
+}
+
+void checkPrevious(const AgentSnapshot& s) {
+    if (!s.hasPrevious) return;
+    const AgentDescriptor& d = s.descriptor;
+    requireBelow("previousFeatures", s.previousFeatures, s.featureKeys.size(), "the feature count");
+    requireSize("previousActivations", s.previousActivations.size(), s.previousFeatures.size(),
+                "one per previous feature");
+    requireFinite("previousActivations", s.previousActivations);
+    if (s.previousAction >= d.numActions) {
+        fail("previousAction = " + std::to_string(s.previousAction) + " is out of range (the agent has " +
+             std::to_string(d.numActions) + " actions)");
+    }
+    requireSize("previousDiscrete", s.previousDiscrete.size(), d.discreteSensors.size(), "one per discrete sensor");
+    for (std::size_t i = 0; i < s.previousDiscrete.size(); ++i) {
+        const std::int32_t v = s.previousDiscrete[i];
+        if (v < 0 || static_cast<std::uint32_t>(v) >= d.discreteSensors[i]) {
+            fail("previousDiscrete[" + std::to_string(i) + "] = " + std::to_string(v) +
+                 " is out of range (the sensor has " + std::to_string(d.discreteSensors[i]) + " values)");
+        }
+    }
+    requireSize("previousContinuous", s.previousContinuous.size(), d.continuousSensors.size(),
+                "one per continuous sensor");
+    requireFinite("previousContinuous", s.previousContinuous);
+}
+
+}  // namespace
+
+void checkSnapshot(const AgentSnapshot& s) {
+    checkDescriptor(s.descriptor);
+    checkFeatures(s);
+    checkTraces(s);
+    checkPrevious(s);
+    if (s.rng[0] == 0 && s.rng[1] == 0 && s.rng[2] == 0 && s.rng[3] == 0) {
+        fail("rng state is all zero (not a state the generator can be in)");
+    }
+    if (!(std::isfinite(s.lastDt) && s.lastDt > 0.0f)) fail("lastDt is not a finite number > 0");
+    if (!(std::isfinite(s.modelError) && s.modelError >= 0.0f)) fail("modelError is not a finite number >= 0");
+}
+
+}  // namespace verve::io

@@ -1,0 +1,147 @@
+// AgentSnapshot -> XML text (layout in snapshot_xml.hpp).
+#include <pugixml.hpp>
+
+#include <type_traits>
+#include <utility>
+
+#include "io/number_text.hpp"
+#include "io/snapshot_check.hpp"
+#include "io/snapshot_xml.hpp"
+#include "verve/error.hpp"
+
+namespace verve::io {
+namespace {
+
+struct StringWriter : pugi::xml_writer {
+    std::string text;
+    void write(const void* data, std::size_t size) override { text.append(static_cast<const char*>(data), size); }
+};
+
+// Values as text, `perLine` to a line, so a matrix reads as rows.
+template <typename T>
+std::string listText(const std::vector<T>& values, std::size_t perLine) {
+    std::string out;
+    out.reserve(values.size() * 12 + 2);
+    if (perLine == 0) perLine = 16;
+    for (std::size_t i = 0; i < values.size(); ++i) {
+        out += (i % perLine == 0) ? '\n' : ' ';
+        if constexpr (std::is_same_v<T, float>) {
+            appendNumber(out, values[i]);
+        } else if constexpr (std::is_signed_v<T>) {
+            appendNumber(out, static_cast<std::int64_t>(values[i]));
+        } else {
+            appendNumber(out, static_cast<std::uint64_t>(values[i]));
+        }
+    }
+    if (!values.empty()) out += '\n';
+    return out;
+}
+
+void setNumber(pugi::xml_node node, const char* name, float value) {
+    node.append_attribute(name).set_value(numberText(value).c_str());
+}
+
+void setNumber(pugi::xml_node node, const char* name, std::uint64_t value) {
+    node.append_attribute(name).set_value(numberText(value).c_str());
+}
+
+template <typename T>
+void appendList(pugi::xml_node parent, const char* name, const std::vector<T>& values, std::size_t perLine) {
+    parent.append_child(name).text().set(listText(values, perLine).c_str());
+}
+
+const char* allocationName(RbfAllocation a) { return a == RbfAllocation::Full ? "full" : "dynamic"; }
+
+const char* curiosityName(CuriosityMode c) {
+    switch (c) {
+        case CuriosityMode::Novelty: return "novelty";
+        case CuriosityMode::Progress: return "progress";
+        default: return "none";
+    }
+}
+
+void writeDescriptor(pugi::xml_node root, const AgentDescriptor& d) {
+    pugi::xml_node n = root.append_child("descriptor");
+    setNumber(n, "resolution", std::uint64_t{d.resolution});
+    setNumber(n, "actions", std::uint64_t{d.numActions});
+    n.append_attribute("allocation").set_value(allocationName(d.allocation));
+    setNumber(n, "tau_value", d.tauValue);
+    setNumber(n, "tau_discount", d.tauDiscount);
+    setNumber(n, "tau_eligibility", d.tauEligibility);
+    setNumber(n, "policy_multiplier", d.policyMultiplier);
+    setNumber(n, "trace_threshold", d.traceThreshold);
+    setNumber(n, "seed", d.seed);
+    n.append_attribute("planning").set_value(d.planning);
+    setNumber(n, "tau_model", d.tauModel);
+    setNumber(n, "max_planning_steps", std::uint64_t{d.maxPlanningSteps});
+    setNumber(n, "planning_uncertainty_threshold", d.planningUncertaintyThreshold);
+    n.append_attribute("curiosity").set_value(curiosityName(d.curiosity));
+    setNumber(n, "curiosity_factor", d.curiosityFactor);
+    n.append_attribute("planning_accumulates_uncertainty").set_value(d.planningAccumulatesUncertainty);
+    n.append_attribute("learn_from_real_steps").set_value(d.learnFromRealSteps);
+    n.append_attribute("discrete_prediction")
+        .set_value(d.discretePrediction == DiscretePrediction::Ordinal ? "ordinal" : "categorical");
+    for (auto values : d.discreteSensors) setNumber(n.append_child("discrete_sensor"), "values", std::uint64_t{values});
+    for (const auto& c : d.continuousSensors) n.append_child("continuous_sensor").append_attribute("circular").set_value(c.circular);
+}
+
+void writeState(pugi::xml_node root, const AgentSnapshot& s) {
+    pugi::xml_node n = root.append_child("state");
+    n.append_attribute("learning").set_value(s.learning);
+    setNumber(n, "steps", s.steps);
+    setNumber(n, "model_error", s.modelError);
+    setNumber(n, "last_dt", s.lastDt);
+    std::string rng;
+    for (std::uint64_t word : s.rng) {
+        if (!rng.empty()) rng += ' ';
+        appendNumber(rng, word);
+    }
+    n.append_attribute("rng").set_value(rng.c_str());
+}
+
+void writeFeatures(pugi::xml_node root, const AgentSnapshot& s) {
+    pugi::xml_node f = root.append_child("features");
+    setNumber(f, "count", std::uint64_t{s.featureKeys.size()});
+    appendList(f, "keys", s.featureKeys, 16);
+    appendList(f, "centres", s.centres, s.descriptor.continuousSensors.size());
+    pugi::xml_node w = root.append_child("weights");
+    setNumber(w, "stride", std::uint64_t{s.stride});
+    w.text().set(listText(s.weights, s.stride).c_str());
+}
+
+void writeShortTermMemory(pugi::xml_node root, const AgentSnapshot& s) {
+    pugi::xml_node t = root.append_child("traces");
+    setNumber(t, "stride", std::uint64_t{s.traceStride});
+    setNumber(t, "count", std::uint64_t{s.traceFeatures.size()});
+    appendList(t, "features", s.traceFeatures, 16);
+    appendList(t, "values", s.traces, s.traceStride);
+    if (!s.hasPrevious) return;
+    pugi::xml_node p = root.append_child("previous");
+    setNumber(p, "action", std::uint64_t{s.previousAction});
+    appendList(p, "features", s.previousFeatures, 16);
+    appendList(p, "activations", s.previousActivations, 16);
+    appendList(p, "discrete", s.previousDiscrete, 16);
+    appendList(p, "continuous", s.previousContinuous, 16);
+}
+
+}  // namespace
+
+std::string snapshotToXml(const AgentSnapshot& snapshot, bool includeTraces) {
+    try {
+        checkSnapshot(snapshot);
+    } catch (const Error& e) {
+        throw Error(ErrorCode::Internal, std::string("refusing to save an inconsistent agent: ") + e.what());
+    }
+    pugi::xml_document doc;
+    pugi::xml_node root = doc.append_child(kRootElement);
+    setNumber(root, "format_version", std::uint64_t{AgentSnapshot::kFormatVersion});
+    writeDescriptor(root, snapshot.descriptor);
+    writeState(root, snapshot);
+    writeFeatures(root, snapshot);
+    if (includeTraces) writeShortTermMemory(root, snapshot);
+    StringWriter writer;
+    doc.save(writer, "  ", pugi::format_indent, pugi::encoding_utf8);
+    return std::move(writer.text);
+}
+
+}  // namespace verve::io

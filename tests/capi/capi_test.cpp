@@ -1,0 +1,391 @@
+// The C ABI through the shared library, as a host sees it: result codes, messages, NULLs, bad
+// counts and values that change nothing, struct sizes, memory saves, threads.
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <cstring>
+#include <limits>
+#include <string>
+#include <thread>
+#include <vector>
+
+#include "verve_c.h"
+
+namespace {
+
+constexpr float kNaN = std::numeric_limits<float>::quiet_NaN();
+constexpr float kInf = std::numeric_limits<float>::infinity();
+
+verve_agent_desc smallDesc() {
+    verve_agent_desc d;
+    verve_agent_desc_default(&d);
+    d.num_discrete_sensors = 1;
+    d.discrete_sensor_values[0] = 5;
+    d.num_continuous_sensors = 1;
+    d.num_actions = 3;
+    d.seed = 42;
+    return d;
+}
+
+std::string lastError() { return verve_last_error(); }
+
+class CApi : public ::testing::Test {
+protected:
+    void SetUp() override {
+        const verve_agent_desc d = smallDesc();
+        ASSERT_EQ(verve_agent_create(&d, &agent_), VERVE_OK) << verve_last_error();
+        for (int i = 0; i < 50; ++i) step(i % 5, static_cast<float>(i % 7) / 3.5f - 1.0f, 0.5f);
+    }
+    void TearDown() override { verve_agent_destroy(agent_); }
+
+    uint32_t step(int32_t d, float c, float reward) {
+        uint32_t action = 99;
+        EXPECT_EQ(verve_agent_update(agent_, reward, &d, 1, &c, 1, 0.1f, &action), VERVE_OK) << verve_last_error();
+        return action;
+    }
+
+    std::string saved() const {
+        size_t size = 0;
+        EXPECT_EQ(verve_agent_save_memory(agent_, nullptr, &size), VERVE_OK);
+        std::string xml(size, '\0');
+        EXPECT_EQ(verve_agent_save_memory(agent_, &xml[0], &size), VERVE_OK);
+        return xml;
+    }
+
+    // A refused call must leave the agent exactly as it was.
+    void expectRefusedUnchanged(verve_result expected, verve_result actual) {
+        EXPECT_EQ(actual, expected) << verve_last_error();
+        EXPECT_FALSE(lastError().empty());
+    }
+
+    verve_agent* agent_ = nullptr;
+};
+
+TEST(CApiLibrary, VersionAndResultNames) {
+    EXPECT_EQ(verve_version(), static_cast<uint32_t>(VERVE_VERSION_NUMBER));
+    EXPECT_STREQ(verve_result_name(VERVE_OK), "VERVE_OK");
+    EXPECT_STREQ(verve_result_name(VERVE_ERROR_FORMAT), "VERVE_ERROR_FORMAT");
+    EXPECT_STREQ(verve_result_name(VERVE_ERROR_INTERNAL), "VERVE_ERROR_INTERNAL");
+    EXPECT_STREQ(verve_result_name(static_cast<verve_result>(15)), "VERVE_UNKNOWN_RESULT");
+}
+
+TEST(CApiLibrary, LastErrorIsClearedBySuccessAndNamesTheCall) {
+    verve_agent* out = nullptr;
+    EXPECT_EQ(verve_agent_create(nullptr, &out), VERVE_ERROR_INVALID_ARGUMENT);
+    EXPECT_EQ(lastError(), "verve_agent_create: desc is NULL");
+    const verve_agent_desc d = smallDesc();
+    ASSERT_EQ(verve_agent_create(&d, &out), VERVE_OK);
+    EXPECT_EQ(lastError(), "");
+    verve_agent_destroy(out);
+}
+
+TEST(CApiLibrary, LastErrorIsPerThread) {
+    EXPECT_EQ(verve_agent_get_value(nullptr, nullptr), VERVE_ERROR_INVALID_ARGUMENT);
+    const std::string mine = lastError();
+    std::string theirs = "unset";
+    std::thread([&] { theirs = verve_last_error(); }).join();
+    EXPECT_EQ(theirs, "");
+    EXPECT_EQ(lastError(), mine);
+}
+
+TEST_F(CApi, NullPointersAreRefused) {
+    const std::string before = saved();
+    verve_agent_desc d = smallDesc();
+    verve_agent* out = reinterpret_cast<verve_agent*>(0x1);  // must stay untouched
+    float f = 0.0f;
+    uint32_t u = 0;
+    int i = 0;
+    int32_t disc = 0;
+    size_t size = 0;
+    verve_agent_stats stats;
+    stats.struct_size = sizeof stats;
+    verve_value_axis axis = {VERVE_SENSOR_CONTINUOUS, 0, 4};
+    float values[4];
+
+    const verve_result results[] = {
+        verve_agent_desc_init(nullptr, sizeof d),
+        verve_agent_create(nullptr, &out),
+        verve_agent_create(&d, nullptr),
+        verve_agent_update(nullptr, 0.0f, &disc, 1, &f, 1, 0.1f, &u),
+        verve_agent_update(agent_, 0.0f, &disc, 1, &f, 1, 0.1f, nullptr),
+        verve_agent_update(agent_, 0.0f, nullptr, 1, &f, 1, 0.1f, &u),
+        verve_agent_update(agent_, 0.0f, &disc, 1, nullptr, 1, 0.1f, &u),
+        verve_agent_end_episode(nullptr, 0.0f),
+        verve_agent_reset_short_term_memory(nullptr),
+        verve_agent_set_learning(nullptr, 1),
+        verve_agent_get_learning(nullptr, &i),
+        verve_agent_get_learning(agent_, nullptr),
+        verve_agent_get_desc(nullptr, &d),
+        verve_agent_get_desc(agent_, nullptr),
+        verve_agent_get_value(nullptr, &f),
+        verve_agent_get_value(agent_, nullptr),
+        verve_agent_get_td_error(nullptr, &f),
+        verve_agent_get_td_error(agent_, nullptr),
+        verve_agent_get_rbf_count(nullptr, &u),
+        verve_agent_get_rbf_count(agent_, nullptr),
+        verve_agent_get_stats(nullptr, &stats),
+        verve_agent_get_stats(agent_, nullptr),
+        verve_agent_sample_values(nullptr, &axis, 1, &disc, 1, &f, 1, values, 4),
+        verve_agent_sample_values(agent_, nullptr, 1, &disc, 1, &f, 1, values, 4),
+        verve_agent_sample_values(agent_, &axis, 1, nullptr, 1, &f, 1, values, 4),
+        verve_agent_sample_values(agent_, &axis, 1, &disc, 1, nullptr, 1, values, 4),
+        verve_agent_sample_values(agent_, &axis, 1, &disc, 1, &f, 1, nullptr, 4),
+        verve_agent_save(nullptr, "x.xml"),
+        verve_agent_save(agent_, nullptr),
+        verve_agent_load(nullptr, &out),
+        verve_agent_load("x.xml", nullptr),
+        verve_agent_save_memory(nullptr, nullptr, &size),
+        verve_agent_save_memory(agent_, nullptr, nullptr),
+        verve_agent_load_memory(nullptr, 10, &out),
+        verve_agent_load_memory("<x/>", 4, nullptr),
+    };
+    for (std::size_t k = 0; k < sizeof results / sizeof results[0]; ++k) {
+        EXPECT_EQ(results[k], VERVE_ERROR_INVALID_ARGUMENT) << "call #" << k;
+    }
+    EXPECT_NE(lastError().find("NULL"), std::string::npos) << lastError();
+    EXPECT_EQ(out, reinterpret_cast<verve_agent*>(0x1));
+    verve_agent_destroy(nullptr);
+    verve_agent_desc_default(nullptr);
+    EXPECT_EQ(saved(), before);
+}
+
+TEST_F(CApi, BadObservationsChangeNothing) {
+    const std::string before = saved();
+    int32_t disc = 2;
+    float cont = 0.5f;
+    const int32_t badDisc[] = {5, -1};
+    uint32_t action = 77;
+    expectRefusedUnchanged(VERVE_ERROR_INVALID_ARGUMENT, verve_agent_update(agent_, 0.0f, &disc, 0, &cont, 1, 0.1f, &action));
+    expectRefusedUnchanged(VERVE_ERROR_INVALID_ARGUMENT, verve_agent_update(agent_, 0.0f, &disc, 1, &cont, 2, 0.1f, &action));
+    for (int32_t d : badDisc) {
+        expectRefusedUnchanged(VERVE_ERROR_INVALID_ARGUMENT, verve_agent_update(agent_, 0.0f, &d, 1, &cont, 1, 0.1f, &action));
+    }
+    for (float bad : {kNaN, kInf, -kInf}) {
+        expectRefusedUnchanged(VERVE_ERROR_INVALID_ARGUMENT, verve_agent_update(agent_, 0.0f, &disc, 1, &bad, 1, 0.1f, &action));
+        expectRefusedUnchanged(VERVE_ERROR_INVALID_ARGUMENT, verve_agent_update(agent_, bad, &disc, 1, &cont, 1, 0.1f, &action));
+        expectRefusedUnchanged(VERVE_ERROR_INVALID_ARGUMENT, verve_agent_update(agent_, 0.0f, &disc, 1, &cont, 1, bad, &action));
+    }
+    for (float dt : {0.0f, -0.1f}) {
+        expectRefusedUnchanged(VERVE_ERROR_INVALID_ARGUMENT, verve_agent_update(agent_, 0.0f, &disc, 1, &cont, 1, dt, &action));
+    }
+    expectRefusedUnchanged(VERVE_ERROR_INVALID_ARGUMENT, verve_agent_end_episode(agent_, kNaN));
+    EXPECT_EQ(action, 77u);
+    EXPECT_EQ(saved(), before);
+    // And the agent still works.
+    EXPECT_LT(step(1, 0.0f, 0.0f), 3u);
+    EXPECT_EQ(lastError(), "");
+}
+
+TEST_F(CApi, ReadOutsAndLearningSwitch) {
+    verve_agent_stats stats;
+    stats.struct_size = sizeof stats;
+    ASSERT_EQ(verve_agent_get_stats(agent_, &stats), VERVE_OK);
+    EXPECT_EQ(stats.steps, 50u);
+    uint32_t rbfs = 0;
+    ASSERT_EQ(verve_agent_get_rbf_count(agent_, &rbfs), VERVE_OK);
+    EXPECT_EQ(rbfs, stats.rbf_count);
+    EXPECT_GT(rbfs, 0u);
+    float value = kNaN;
+    ASSERT_EQ(verve_agent_get_value(agent_, &value), VERVE_OK);
+    EXPECT_EQ(value, stats.value);
+    stats.struct_size = sizeof stats - 4;
+    EXPECT_EQ(verve_agent_get_stats(agent_, &stats), VERVE_ERROR_INVALID_ARGUMENT);
+    EXPECT_NE(lastError().find("struct_size"), std::string::npos);
+
+    int enabled = -1;
+    ASSERT_EQ(verve_agent_get_learning(agent_, &enabled), VERVE_OK);
+    EXPECT_EQ(enabled, 1);
+    ASSERT_EQ(verve_agent_set_learning(agent_, 0), VERVE_OK);
+    ASSERT_EQ(verve_agent_get_learning(agent_, &enabled), VERVE_OK);
+    EXPECT_EQ(enabled, 0);
+}
+
+TEST_F(CApi, SampleValues) {
+    const int32_t disc = 0;
+    const float cont = 0.0f;
+    verve_value_axis axes[2] = {{VERVE_SENSOR_CONTINUOUS, 0, 9}, {VERVE_SENSOR_DISCRETE, 0, 5}};
+    std::vector<float> image(45, kNaN);
+    ASSERT_EQ(verve_agent_sample_values(agent_, axes, 2, &disc, 1, &cont, 1, image.data(), 45), VERVE_OK) << verve_last_error();
+    for (float v : image) EXPECT_TRUE(std::isfinite(v));
+    EXPECT_EQ(verve_agent_sample_values(agent_, axes, 3, &disc, 1, &cont, 1, image.data(), 45), VERVE_ERROR_INVALID_ARGUMENT);
+    EXPECT_EQ(verve_agent_sample_values(agent_, axes, 0, &disc, 1, &cont, 1, image.data(), 45), VERVE_ERROR_INVALID_ARGUMENT);
+    EXPECT_EQ(verve_agent_sample_values(agent_, axes, 2, &disc, 1, &cont, 1, image.data(), 44), VERVE_ERROR_INVALID_ARGUMENT);
+    axes[0].kind = 7;
+    EXPECT_EQ(verve_agent_sample_values(agent_, axes, 1, &disc, 1, &cont, 1, image.data(), 9), VERVE_ERROR_INVALID_ARGUMENT);
+    EXPECT_NE(lastError().find("kind"), std::string::npos);
+}
+
+// ---- descriptors and struct_size ----------------------------------------------------------
+
+TEST(CApiDesc, DefaultsMatchTheDocumentedOnes) {
+    verve_agent_desc d;
+    verve_agent_desc_default(&d);
+    EXPECT_EQ(d.struct_size, sizeof d);
+    EXPECT_EQ(d.resolution, 10u);
+    EXPECT_FLOAT_EQ(d.tau_value, 0.1f);
+    EXPECT_FLOAT_EQ(d.tau_discount, 1.0f);
+    EXPECT_FLOAT_EQ(d.policy_multiplier, 5.0f);
+    EXPECT_EQ(d.max_planning_steps, 10u);
+    EXPECT_FLOAT_EQ(d.curiosity_factor, 3.0f);
+}
+
+TEST(CApiDesc, AnOldSmallerStructIsAcceptedAndTheRestDefaulted) {
+    // An old host's struct ends after `seed`; the bytes beyond it are not its own (here: garbage).
+    unsigned char memory[sizeof(verve_agent_desc)];
+    std::memset(memory, 0xAB, sizeof memory);
+    verve_agent_desc* d = reinterpret_cast<verve_agent_desc*>(memory);
+    ASSERT_EQ(verve_agent_desc_init(d, VERVE_AGENT_DESC_SIZE_V1), VERVE_OK);
+    for (std::size_t k = VERVE_AGENT_DESC_SIZE_V1; k < sizeof memory; ++k) ASSERT_EQ(memory[k], 0xAB) << "byte " << k;
+    EXPECT_EQ(d->struct_size, VERVE_AGENT_DESC_SIZE_V1);
+    d->num_actions = 4;
+
+    verve_agent* agent = nullptr;
+    ASSERT_EQ(verve_agent_create(d, &agent), VERVE_OK) << verve_last_error();
+    verve_agent_desc full;
+    verve_agent_desc_default(&full);
+    ASSERT_EQ(verve_agent_get_desc(agent, &full), VERVE_OK);
+    EXPECT_EQ(full.num_actions, 4u);
+    EXPECT_EQ(full.planning, 0u);  // defaults, not the 0xAB garbage
+    EXPECT_EQ(full.max_planning_steps, 10u);
+    EXPECT_FLOAT_EQ(full.curiosity_factor, 3.0f);
+
+    // get_desc into an old struct writes only its bytes.
+    std::memset(memory, 0xCD, sizeof memory);
+    d->struct_size = VERVE_AGENT_DESC_SIZE_V1;
+    ASSERT_EQ(verve_agent_get_desc(agent, d), VERVE_OK);
+    EXPECT_EQ(d->num_actions, 4u);
+    for (std::size_t k = VERVE_AGENT_DESC_SIZE_V1; k < sizeof memory; ++k) ASSERT_EQ(memory[k], 0xCD) << "byte " << k;
+    verve_agent_destroy(agent);
+}
+
+TEST(CApiDesc, GarbageStructSizesAreRefused) {
+    for (uint32_t size : {0u, 4u, VERVE_AGENT_DESC_SIZE_V1 - 8, VERVE_AGENT_DESC_SIZE_V1 + 4,
+                          VERVE_AGENT_DESC_SIZE_V2 + 8, 0xFFFFFFFFu}) {
+        verve_agent_desc d = smallDesc();
+        d.struct_size = size;
+        verve_agent* out = nullptr;
+        EXPECT_EQ(verve_agent_create(&d, &out), VERVE_ERROR_INVALID_ARGUMENT) << size;
+        EXPECT_EQ(out, nullptr);
+        EXPECT_NE(lastError().find("struct_size"), std::string::npos);
+        EXPECT_EQ(verve_agent_desc_init(&d, size), VERVE_ERROR_INVALID_ARGUMENT) << size;
+    }
+}
+
+TEST(CApiDesc, BadFieldsAreRefusedWithTheirName) {
+    struct Case {
+        void (*edit)(verve_agent_desc&);
+        const char* name;
+    };
+    const Case cases[] = {
+        {[](verve_agent_desc& d) { d.num_discrete_sensors = 17; }, "num_discrete_sensors"},
+        {[](verve_agent_desc& d) { d.num_continuous_sensors = 99; }, "num_continuous_sensors"},
+        {[](verve_agent_desc& d) { d.continuous_sensor_circular[0] = 2; }, "circular"},
+        {[](verve_agent_desc& d) { d.rbf_allocation = 5; }, "rbf_allocation"},
+        {[](verve_agent_desc& d) { d.planning = 2; }, "planning"},
+        {[](verve_agent_desc& d) { d.curiosity = 3; }, "curiosity"},
+        {[](verve_agent_desc& d) { d.num_actions = 0; }, "numActions"},
+        {[](verve_agent_desc& d) { d.discrete_sensor_values[0] = 0; }, "discrete sensor 0"},
+        {[](verve_agent_desc& d) { d.tau_value = kNaN; }, "tauValue"},
+        {[](verve_agent_desc& d) { d.trace_threshold = 0.0f; }, "traceThreshold"},
+    };
+    for (const Case& c : cases) {
+        verve_agent_desc d = smallDesc();
+        c.edit(d);
+        verve_agent* out = nullptr;
+        EXPECT_EQ(verve_agent_create(&d, &out), VERVE_ERROR_INVALID_ARGUMENT) << c.name;
+        EXPECT_EQ(out, nullptr);
+        EXPECT_NE(lastError().find(c.name), std::string::npos) << lastError();
+    }
+}
+
+// ---- persistence ---------------------------------------------------------------------------
+
+TEST_F(CApi, MemorySaveTwoCallPattern) {
+    size_t size = 0;
+    ASSERT_EQ(verve_agent_save_memory(agent_, nullptr, &size), VERVE_OK);
+    ASSERT_GT(size, 100u);
+    std::vector<char> small(size - 1, 'z');
+    size_t smallSize = small.size();
+    EXPECT_EQ(verve_agent_save_memory(agent_, small.data(), &smallSize), VERVE_ERROR_BUFFER_TOO_SMALL);
+    EXPECT_EQ(smallSize, size);
+    EXPECT_EQ(small.back(), 'z');  // nothing written
+    std::vector<char> buffer(size + 10, 'z');
+    size_t bufferSize = buffer.size();
+    ASSERT_EQ(verve_agent_save_memory(agent_, buffer.data(), &bufferSize), VERVE_OK);
+    EXPECT_EQ(bufferSize, size);
+
+    verve_agent* loaded = nullptr;
+    ASSERT_EQ(verve_agent_load_memory(buffer.data(), bufferSize, &loaded), VERVE_OK) << verve_last_error();
+    // Same state: same actions from here on.
+    for (int i = 0; i < 100; ++i) {
+        const int32_t d = i % 5;
+        const float c = std::sin(static_cast<float>(i));
+        uint32_t a1 = 0, a2 = 1;
+        ASSERT_EQ(verve_agent_update(agent_, 0.1f, &d, 1, &c, 1, 0.1f, &a1), VERVE_OK);
+        ASSERT_EQ(verve_agent_update(loaded, 0.1f, &d, 1, &c, 1, 0.1f, &a2), VERVE_OK);
+        ASSERT_EQ(a1, a2) << "step " << i;
+    }
+    verve_agent_destroy(loaded);
+}
+
+TEST_F(CApi, BadSavesGiveFormatOrVersionErrorsAndNoAgent) {
+    std::string xml = saved();
+    verve_agent* out = reinterpret_cast<verve_agent*>(0x1);
+    EXPECT_EQ(verve_agent_load_memory(xml.data(), xml.size() / 2, &out), VERVE_ERROR_FORMAT);
+    EXPECT_NE(lastError().find("truncated"), std::string::npos) << lastError();
+    EXPECT_EQ(verve_agent_load_memory(xml.data(), 0, &out), VERVE_ERROR_FORMAT);
+    const std::string future = std::string(xml).replace(xml.find("format_version=\"1\""), 18, "format_version=\"9\"");
+    EXPECT_EQ(verve_agent_load_memory(future.data(), future.size(), &out), VERVE_ERROR_VERSION);
+    EXPECT_NE(lastError().find("version 9"), std::string::npos) << lastError();
+    EXPECT_EQ(out, reinterpret_cast<verve_agent*>(0x1));
+}
+
+TEST_F(CApi, FileSaveAndLoad) {
+    const std::string path = ::testing::TempDir() + "verve_capi_test.xml";
+    ASSERT_EQ(verve_agent_save(agent_, path.c_str()), VERVE_OK) << verve_last_error();
+    verve_agent* loaded = nullptr;
+    ASSERT_EQ(verve_agent_load(path.c_str(), &loaded), VERVE_OK) << verve_last_error();
+    size_t a = 0, b = 0;
+    verve_agent_save_memory(agent_, nullptr, &a);
+    verve_agent_save_memory(loaded, nullptr, &b);
+    EXPECT_EQ(a, b);
+    verve_agent_destroy(loaded);
+    std::remove(path.c_str());
+
+    EXPECT_EQ(verve_agent_save(agent_, "/no/such/dir/agent.xml"), VERVE_ERROR_IO);
+    EXPECT_NE(lastError().find("/no/such/dir/agent.xml"), std::string::npos) << lastError();
+    verve_agent* out = nullptr;
+    EXPECT_EQ(verve_agent_load("/no/such/file.xml", &out), VERVE_ERROR_IO);
+    EXPECT_EQ(out, nullptr);
+}
+
+// ---- threads -------------------------------------------------------------------------------
+
+// Different agents may be used concurrently: each thread's agent must end exactly as it would alone.
+TEST(CApiThreads, DifferentAgentsConcurrently) {
+    auto run = [](uint64_t seed) {
+        verve_agent_desc d = smallDesc();
+        d.seed = seed;
+        verve_agent* agent = nullptr;
+        EXPECT_EQ(verve_agent_create(&d, &agent), VERVE_OK);
+        uint64_t checksum = 0;
+        for (int i = 0; i < 3000; ++i) {
+            const int32_t disc = (i * 7) % 5;
+            const float c = std::sin(0.37f * static_cast<float>(i));
+            uint32_t action = 0;
+            EXPECT_EQ(verve_agent_update(agent, disc == 2 ? 1.0f : -0.1f, &disc, 1, &c, 1, 0.1f, &action), VERVE_OK);
+            checksum = checksum * 31 + action;
+        }
+        verve_agent_destroy(agent);
+        return checksum;
+    };
+    std::vector<uint64_t> alone;
+    for (uint64_t s = 1; s <= 4; ++s) alone.push_back(run(s));
+    std::vector<uint64_t> together(4);
+    std::vector<std::thread> threads;
+    for (std::size_t t = 0; t < 4; ++t) threads.emplace_back([&, t] { together[t] = run(t + 1); });
+    for (auto& th : threads) th.join();
+    EXPECT_EQ(alone, together);
+}
+
+}  // namespace

@@ -1,0 +1,120 @@
+// Shared helpers for the save/load tests: agents with something learned, exact comparisons.
+#pragma once
+#include <gtest/gtest.h>
+
+#include <cstdint>
+#include <cstring>
+#include <string>
+#include <vector>
+
+#include "verve/agent.hpp"
+
+namespace verve::iotest {
+
+// Two continuous sensors (one circular), one discrete sensor, 3 actions.
+inline AgentDescriptor mixedDescriptor(std::uint64_t seed = 7) {
+    AgentDescriptor d;
+    d.addDiscreteSensor(3).addContinuousSensor(false).addContinuousSensor(true);
+    d.numActions = 3;
+    d.resolution = 8;
+    d.seed = seed;
+    return d;
+}
+
+// A deterministic stream of observations and rewards, the same for every agent that replays it.
+class Feed {
+public:
+    explicit Feed(std::uint64_t seed) : state_(seed * 2654435761u + 1) {}
+    std::uint64_t bits() {
+        state_ = state_ * 6364136223846793005ULL + 1442695040888963407ULL;
+        return state_ >> 33;
+    }
+    float uniform() { return static_cast<float>(bits() & 0xFFFFFF) / 8388608.0f - 1.0f; }  // [-1, 1)
+    Observation next(const AgentDescriptor& d) {
+        Observation o(d);
+        for (std::size_t i = 0; i < o.discrete.size(); ++i) {
+            o.discrete[i] = static_cast<std::int32_t>(bits() % d.discreteSensors[i]);
+        }
+        for (auto& c : o.continuous) c = uniform();
+        return o;
+    }
+
+private:
+    std::uint64_t state_;
+};
+
+// Runs `steps` updates (ending a trial every 25 steps), returns the actions chosen.
+inline std::vector<std::uint32_t> drive(Agent& agent, Feed& feed, int steps) {
+    std::vector<std::uint32_t> actions;
+    for (int i = 0; i < steps; ++i) {
+        const Observation o = feed.next(agent.descriptor());
+        actions.push_back(agent.update(feed.uniform(), o, 0.1f));
+        if (i % 25 == 24) agent.endEpisode(feed.uniform());
+    }
+    return actions;
+}
+
+inline Agent trainedAgent(const AgentDescriptor& d, int steps = 400, std::uint64_t feedSeed = 3) {
+    Agent agent(d);
+    Feed feed(feedSeed);
+    drive(agent, feed, steps);
+    return agent;
+}
+
+inline bool sameBits(const std::vector<float>& a, const std::vector<float>& b) {
+    return a.size() == b.size() && (a.empty() || std::memcmp(a.data(), b.data(), a.size() * sizeof(float)) == 0);
+}
+
+inline void expectSameDescriptor(const AgentDescriptor& a, const AgentDescriptor& b) {
+    EXPECT_EQ(a.discreteSensors, b.discreteSensors);
+    ASSERT_EQ(a.continuousSensors.size(), b.continuousSensors.size());
+    for (std::size_t i = 0; i < a.continuousSensors.size(); ++i) {
+        EXPECT_EQ(a.continuousSensors[i].circular, b.continuousSensors[i].circular);
+    }
+    EXPECT_EQ(a.resolution, b.resolution);
+    EXPECT_EQ(a.numActions, b.numActions);
+    EXPECT_EQ(a.allocation, b.allocation);
+    EXPECT_EQ(a.tauValue, b.tauValue);
+    EXPECT_EQ(a.tauDiscount, b.tauDiscount);
+    EXPECT_EQ(a.tauEligibility, b.tauEligibility);
+    EXPECT_EQ(a.policyMultiplier, b.policyMultiplier);
+    EXPECT_EQ(a.traceThreshold, b.traceThreshold);
+    EXPECT_EQ(a.seed, b.seed);
+    EXPECT_EQ(a.planning, b.planning);
+    EXPECT_EQ(a.tauModel, b.tauModel);
+    EXPECT_EQ(a.maxPlanningSteps, b.maxPlanningSteps);
+    EXPECT_EQ(a.planningUncertaintyThreshold, b.planningUncertaintyThreshold);
+    EXPECT_EQ(a.curiosity, b.curiosity);
+    EXPECT_EQ(a.curiosityFactor, b.curiosityFactor);
+    EXPECT_EQ(a.planningAccumulatesUncertainty, b.planningAccumulatesUncertainty);
+    EXPECT_EQ(a.learnFromRealSteps, b.learnFromRealSteps);
+    EXPECT_EQ(a.discretePrediction, b.discretePrediction);
+}
+
+// Every field, floats compared bit for bit.
+inline void expectSameSnapshot(const AgentSnapshot& a, const AgentSnapshot& b, bool withTraces = true) {
+    expectSameDescriptor(a.descriptor, b.descriptor);
+    EXPECT_EQ(a.learning, b.learning);
+    EXPECT_EQ(a.featureKeys, b.featureKeys);
+    EXPECT_TRUE(sameBits(a.centres, b.centres));
+    EXPECT_EQ(a.stride, b.stride);
+    EXPECT_TRUE(sameBits(a.weights, b.weights));
+    EXPECT_EQ(a.rng, b.rng);
+    EXPECT_EQ(a.steps, b.steps);
+    EXPECT_EQ(std::memcmp(&a.modelError, &b.modelError, sizeof(float)), 0);
+    EXPECT_EQ(std::memcmp(&a.lastDt, &b.lastDt, sizeof(float)), 0);
+    if (!withTraces) return;
+    EXPECT_EQ(a.traceStride, b.traceStride);
+    EXPECT_EQ(a.traceFeatures, b.traceFeatures);
+    EXPECT_TRUE(sameBits(a.traces, b.traces));
+    EXPECT_EQ(a.hasPrevious, b.hasPrevious);
+    if (a.hasPrevious && b.hasPrevious) {
+        EXPECT_EQ(a.previousFeatures, b.previousFeatures);
+        EXPECT_TRUE(sameBits(a.previousActivations, b.previousActivations));
+        EXPECT_EQ(a.previousAction, b.previousAction);
+        EXPECT_EQ(a.previousDiscrete, b.previousDiscrete);
+        EXPECT_TRUE(sameBits(a.previousContinuous, b.previousContinuous));
+    }
+}
+
+}  // namespace verve::iotest
