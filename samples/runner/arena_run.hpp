@@ -1,0 +1,22 @@
+// The learning-NPC arena for the demo: each "trial" is one simulated minute of every NPC learning.
+#pragma once
+#include <cstdint>
+#include <memory>
+#include <vector>
+
+#include "npc_arena.hpp"
+#include "tasks/driver.hpp"
+
+namespace verve::demo {
+
+struct ArenaOutcome {
+    std::vector<double> foodPerNpcMinute;  // per minute
+    std::vector<double> hazardPercent;     // share of NPC time spent in the hazard, per minute
+    std::unique_ptr<scenes::NpcArena> arena;
+    double wallSeconds = 0.0;
+};
+
+ArenaOutcome runArena(std::uint32_t minutes, std::uint64_t seed, std::uint32_t npcs,
+                      const tasks::DescriptorOverride& overrides);
+
+}  // namespace verve::demo
