@@ -86,6 +86,17 @@ void BM_UpdateCartPoleShaped(benchmark::State& state) {
 }
 BENCHMARK(BM_UpdateCartPoleShaped);
 
+// The same agent at the RBF count of the original library's measurement (~650 RBFs, 49 us there):
+// a short fixed run right after the count is reached, so the count stays near 650.
+void BM_UpdateCartPoleShapedAt650Rbfs(benchmark::State& state) {
+    Agent agent(cartPoleAgent());
+    CartPoleRun run(agent);
+    while (agent.rbfCount() < 650) run.step();
+    for (auto _ : state) run.step();
+    state.counters["rbfs"] = static_cast<double>(agent.rbfCount());
+}
+BENCHMARK(BM_UpdateCartPoleShapedAt650Rbfs)->Iterations(2000)->Repetitions(5)->ReportAggregatesOnly(true);
+
 void BM_UpdateCartPoleShapedLearningOff(benchmark::State& state) {
     Agent agent(cartPoleAgent());
     CartPoleRun run(agent);

@@ -17,6 +17,12 @@ enum class CuriosityMode : std::uint8_t {
     Progress = 2,  // learning progress: reward for a falling prediction error
 };
 
+// How the predictive model predicts a discrete sensor's next value.
+enum class DiscretePrediction : std::uint8_t {
+    Categorical = 0,  // one output per value, the largest wins (no false order between values)
+    Ordinal = 1,      // the original's single scalar output, rounded to the nearest value
+};
+
 struct ContinuousSensor {
     bool circular = false;  // the range wraps: -1 and 1 are the same point (angles)
 };
@@ -40,9 +46,17 @@ struct AgentDescriptor {
     bool planning = false;                     // learn a model and plan after each real step
     float tauModel = 0.0f;                     // model learning time constant (0: rate 1)
     std::uint32_t maxPlanningSteps = 10;       // cap on imagined steps per real step
-    float planningUncertaintyThreshold = 0.1f; // a plan stops once accumulated uncertainty exceeds it
+    // Uncertainty is a normalised squared error in [0, 1] per predicted quantity (docs/planning.md),
+    // a different scale from the original's raw error: its 0.1 and 3 were re-measured here.
+    float planningUncertaintyThreshold = 0.5f; // a plan stops once accumulated uncertainty exceeds it
     CuriosityMode curiosity = CuriosityMode::None;
-    float curiosityFactor = 3.0f;              // curiosity reward = factor * uncertainty (or progress)
+    float curiosityFactor = 5.0f;              // curiosity reward = factor * uncertainty (or progress)
+    // Planning variants (docs/planning.md measures each against the original's choice).
+    bool planningAccumulatesUncertainty = true;  // stop on the plan's summed uncertainty (original)
+                                                  // rather than on one step's
+    bool learnFromRealSteps = true;   // Dyna: the critic and actor also learn from real steps
+                                      // (the original learned only inside plans)
+    DiscretePrediction discretePrediction = DiscretePrediction::Categorical;
 
     AgentDescriptor& addDiscreteSensor(std::uint32_t numValues) {
         discreteSensors.push_back(numValues);

@@ -19,6 +19,7 @@ float decayFromTimeConstant(float dt, float tau) { return tau > 0.0f ? std::exp(
 core::WeightLayout weightLayoutFor(const AgentDescriptor& desc) {
     core::WeightLayout layout;
     layout.numActions = desc.numActions;
+    layout.modelColumns = core::PredictiveModel::columnsFor(desc);
     return layout;
 }
 
@@ -27,7 +28,9 @@ Agent::Impl::Impl(const AgentDescriptor& d)
       rep(desc),
       weights(weightLayoutFor(desc)),
       td(desc.numActions, desc.traceThreshold),
-      rng(desc.seed) {
+      rng(desc.seed),
+      model(desc),
+      planner(desc) {
     weights.resize(rep.featureCount());
     previousDiscrete.assign(desc.discreteSensors.size(), 0);
     previousContinuous.assign(desc.continuousSensors.size(), 0.0f);
@@ -41,6 +44,35 @@ StepConstants Agent::Impl::constantsFor(float dt) const {
     k.rates.value = rateFromTimeConstant(dt, desc.tauValue) / rep.activationSum();
     k.rates.policy = desc.policyMultiplier * k.rates.value;
     return k;
+}
+
+void Agent::Impl::learnModel(float reward, const std::int32_t* discrete, float dt) {
+    const float error = model.train(weights, previous, previousAction, discrete, normalized.data(), reward, model.rate(dt));
+    recordModelError(error);
+}
+
+void Agent::Impl::learnModelTerminal(float reward) {
+    recordModelError(model.trainTerminal(weights, previous, previousAction, reward, model.rate(lastDt)));
+}
+
+void Agent::Impl::recordModelError(float error) {
+    stats.modelError += kModelErrorAveraging * (error - stats.modelError);
+    stats.predictedUncertainty = model.lastUncertainty();
+}
+
+void Agent::Impl::plan(const StepConstants& k) {
+    core::PlanSettings p;
+    p.maxSteps = desc.maxPlanningSteps;
+    p.uncertaintyThreshold = desc.planningUncertaintyThreshold;
+    p.accumulate = desc.planningAccumulatesUncertainty;
+    p.curiosity = desc.curiosity;
+    p.curiosityFactor = desc.curiosityFactor;
+    p.gamma = k.gamma;
+    p.traceDecay = k.traceDecay;
+    p.rates = k.rates;
+    const core::PlanResult result = planner.run(p, current, weights, rep, model, rng);
+    stats.planningSteps = result.steps;
+    stats.curiosityReward = result.curiosity;
 }
 
 void Agent::Impl::resetShortTermMemory() {
@@ -71,16 +103,23 @@ std::uint32_t Agent::update(float reward, ObservationView obs, float dt) {
         s.weights.resize(s.rep.featureCount());
     }
 
+    const bool plans = s.learning && s.desc.planning;
     if (s.learning && s.hasPrevious) {
         const StepConstants k = s.constantsFor(dt);
-        const float delta = r + k.gamma * s.td.value(s.weights, s.current) - s.td.value(s.weights, s.previous);
-        s.td.train(s.weights, delta, k.rates);
-        s.td.decay(k.traceDecay);
-        s.stats.tdError = delta;
+        if (plans) s.learnModel(r, obs.discrete, dt);
+        if (s.learnsFromRealSteps()) {
+            // V(s) is the value the previous update left in stats.value: no weight changes
+            // between two updates (endEpisode, resets and restores clear or recompute it).
+            const float delta = r + k.gamma * s.td.value(s.weights, s.current) - s.stats.value;
+            s.td.trainAndDecay(s.weights, delta, k.rates, k.traceDecay);
+            s.stats.tdError = delta;
+        }
     }
+    // Plan from the state just reached, before acting, so the action already uses what it taught.
+    if (plans) s.plan(s.constantsFor(dt));
 
-    const std::uint32_t action = s.td.chooseAction(s.weights, s.current, s.rng, s.activations);
-    if (s.learning) s.td.mark(s.current, action, s.rep.featureCount());
+    const std::uint32_t action = s.td.chooseAction(s.weights, s.current, s.rng, s.activations, s.stats.value);
+    if (s.learning && s.learnsFromRealSteps()) s.td.mark(s.current, action, s.rep.featureCount());
 
     std::swap(s.previous, s.current);
     s.previousAction = action;
@@ -89,7 +128,6 @@ std::uint32_t Agent::update(float reward, ObservationView obs, float dt) {
     s.hasPrevious = true;
 
     ++s.stats.steps;
-    s.stats.value = s.td.value(s.weights, s.previous);
     s.stats.rbfCount = s.rep.featureCount();
     s.stats.liveTraces = s.td.liveCount();
     return action;
@@ -99,11 +137,12 @@ void Agent::endEpisode(float finalReward) {
     Impl& s = *impl_;
     core::checkFinite(finalReward, "final reward");
     const float r = std::clamp(finalReward, -1.0f, 1.0f);
-    if (s.learning && s.hasPrevious) {
+    if (s.learning && s.hasPrevious && s.desc.planning) s.learnModelTerminal(r);
+    if (s.learning && s.hasPrevious && s.learnsFromRealSteps()) {
         // Terminal: nothing lies beyond, so no value is bootstrapped (delta = r - V(s)).
         // The transition lasted as long as the step that chose its action: the last dt.
         const float delta = r - s.td.value(s.weights, s.previous);
-        s.td.train(s.weights, delta, s.constantsFor(s.lastDt).rates);
+        s.td.trainAndDecay(s.weights, delta, s.constantsFor(s.lastDt).rates, 0.0f);
         s.stats.tdError = delta;
     }
     s.resetShortTermMemory();

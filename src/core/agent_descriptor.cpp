@@ -47,6 +47,8 @@ void AgentDescriptor::validate() const {
     require(curiosity == CuriosityMode::None || curiosity == CuriosityMode::Novelty ||
                 curiosity == CuriosityMode::Progress,
             "curiosity must be None, Novelty or Progress");
+    require(discretePrediction == DiscretePrediction::Categorical || discretePrediction == DiscretePrediction::Ordinal,
+            "discretePrediction must be Categorical or Ordinal");
     require(std::isfinite(curiosityFactor) && curiosityFactor >= 0.0f,
             "curiosityFactor must be a finite number >= 0");
 }

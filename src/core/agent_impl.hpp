@@ -4,6 +4,8 @@
 #include <cstdint>
 #include <vector>
 
+#include "core/planner.hpp"
+#include "core/predictive_model.hpp"
 #include "core/rng.hpp"
 #include "core/state_representation.hpp"
 #include "core/td_learner.hpp"
@@ -24,12 +26,22 @@ struct Agent::Impl {
 
     StepConstants constantsFor(float dt) const;
     void resetShortTermMemory();
+    // Planning mode (desc.planning): the model learns the previous real transition, and after a
+    // real step an imagined trajectory trains the critic and actor.
+    void learnModel(float reward, const std::int32_t* discrete, float dt);
+    void learnModelTerminal(float reward);
+    void plan(const StepConstants& k);
+    void recordModelError(float error);
+    static constexpr float kModelErrorAveraging = 0.05f;  // stats.modelError: ~20-step running mean
+    bool learnsFromRealSteps() const { return !desc.planning || desc.learnFromRealSteps; }
 
     AgentDescriptor desc;
     core::StateRepresentation rep;
     core::WeightTable weights;
     core::TdLearner td;
     core::Rng rng;
+    core::PredictiveModel model;
+    core::Planner planner;
     bool learning = true;
 
     // Short-term memory: the previous step.

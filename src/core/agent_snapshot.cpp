@@ -61,9 +61,17 @@ std::unique_ptr<Agent::Impl> restore(const AgentSnapshot& snap) {
         requireSize(snap.traces.size(), snap.traceFeatures.size() * s.td.traceStride(), "traces");
         requireFinite(snap.traces, "trace");
         std::vector<bool> seen(count, false);
-        for (auto f : snap.traceFeatures) {
+        const std::uint32_t stride = s.td.traceStride();
+        for (std::size_t i = 0; i < snap.traceFeatures.size(); ++i) {
+            const auto f = snap.traceFeatures[i];
             if (f >= count || seen[f]) corrupt("trace list names feature " + std::to_string(f) + " twice or out of range");
             seen[f] = true;
+            // A live value trace lies in (0, 1] and bounds the feature's policy traces.
+            const float* e = snap.traces.data() + i * stride;
+            if (!(e[0] > 0.0f && e[0] <= 1.0f)) corrupt("value trace of feature " + std::to_string(f) + " is outside (0, 1]");
+            for (std::uint32_t k = 1; k < stride; ++k) {
+                if (e[k] < 0.0f || e[k] > e[0]) corrupt("policy trace of feature " + std::to_string(f) + " is outside [0, value trace]");
+            }
         }
         s.td.restore(snap.traceFeatures, snap.traces, static_cast<std::uint32_t>(count));
     }

@@ -1,5 +1,7 @@
 #include "core/state_representation.hpp"
 
+#include <Eigen/Core>
+
 #include <algorithm>
 #include <cmath>
 
@@ -10,6 +12,8 @@ namespace {
 
 constexpr float kCutoffWidths = 4.0f;            // activations beyond 4 sigma count as zero
 constexpr std::uint64_t kMaxFullFeatures = 20000000;  // refuse absurd full lattices
+
+using Lanes = Eigen::Array<float, 8, 1>;
 
 std::uint64_t mix(std::uint64_t h, std::uint64_t v) {
     h ^= v + 0x9e3779b97f4a7c15ULL + (h << 6) + (h >> 2);
@@ -29,7 +33,10 @@ StateRepresentation::StateRepresentation(const AgentDescriptor& desc)
       cellSize_(2.0f / static_cast<float>(cellsPerDim_)),
       keyCount_(1),
       activationSum_(1.0f) {
-    for (const auto& s : desc.continuousSensors) circular_.push_back(s.circular);
+    for (const auto& s : desc.continuousSensors) {
+        circular_.push_back(s.circular);
+        wrap_.push_back(s.circular ? 2.0f : 0.0f);
+    }
     for (auto c : discreteCounts_) keyCount_ *= c;
     activationSum_ = std::pow(2.5f, static_cast<float>(numContinuous_));
     coords_.resize(numContinuous_);
@@ -66,10 +73,9 @@ float StateRepresentation::squaredDistance(const float* a, const float* b) const
     float sum = 0.0f;
     for (std::uint32_t d = 0; d < numContinuous_; ++d) {
         float diff = a[d] - b[d];
-        if (circular_[d]) {  // the shorter way round: -1 and 1 are the same point
-            if (diff > 1.0f) diff -= 2.0f;
-            else if (diff < -1.0f) diff += 2.0f;
-        }
+        // Circular sensors take the shorter way round (-1 and 1 are the same point); branch-free,
+        // since this runs for every candidate RBF of every update.
+        diff -= wrap_[d] * (static_cast<float>(diff > 1.0f) - static_cast<float>(diff < -1.0f));
         sum += diff * diff;
     }
     return sum;
@@ -80,7 +86,12 @@ std::uint32_t StateRepresentation::addFeature(std::uint64_t key, const float* ce
     keys_.push_back(key);
     centres_.insert(centres_.end(), centre, centre + numContinuous_);
     cellCoords(centre, coords_.data());
-    arrays_[key].cells[cellHash(coords_.data())].push_back(index);
+    Cell& cell = arrays_[key].cells[cellHash(coords_.data())];
+    const std::size_t lane = cell.features.size() % kLanes;
+    if (lane == 0) cell.centres.resize(cell.centres.size() + std::size_t(numContinuous_) * kLanes, 0.0f);
+    float* block = cell.centres.data() + cell.centres.size() - std::size_t(numContinuous_) * kLanes;
+    for (std::uint32_t d = 0; d < numContinuous_; ++d) block[d * kLanes + lane] = centre[d];
+    cell.features.push_back(index);
     return index;
 }
 
@@ -153,12 +164,32 @@ bool StateRepresentation::find(const std::int32_t* discrete, const float* contin
             if (cell != cells.end() &&
                 std::find(visited_.begin(), visited_.end(), hash) == visited_.end()) {
                 visited_.push_back(hash);
-                for (std::uint32_t feature : cell->second) {
-                    const float d2 = squaredDistance(continuous, centre(feature));
-                    if (d2 >= cutoff2) continue;
-                    nearOne |= d2 < sigma2;
-                    out.push_back(ActiveFeature{feature, std::exp(-d2 * inv2Sigma2)});
+                const Cell& c = cell->second;
+                std::size_t n = out.size();
+                out.resize(n + c.features.size());  // capacity is reused once warmed up
+                ActiveFeature* slots = out.data();
+                const float* block = c.centres.data();
+                for (std::size_t first = 0; first < c.features.size(); first += kLanes) {
+                    // kLanes RBFs at once: Eigen maps the fixed-size arrays onto SIMD registers.
+                    Lanes d2 = Lanes::Zero();
+                    for (std::uint32_t d = 0; d < numContinuous_; ++d, block += kLanes) {
+                        Lanes diff = continuous[d] - Eigen::Map<const Lanes>(block);
+                        if (circular_[d]) {  // the shorter way round: -1 and 1 meet
+                            diff = (diff > 1.0f).select(diff - 2.0f, (diff < -1.0f).select(diff + 2.0f, diff));
+                        }
+                        d2 += diff.square();
+                    }
+                    const Lanes activation = (d2 * -inv2Sigma2).exp();
+                    // Branch-free: every candidate is written and kept only within the cutoff
+                    // (about half are, so a branch would mispredict constantly).
+                    const std::size_t lanes = std::min<std::size_t>(kLanes, c.features.size() - first);
+                    for (std::size_t l = 0; l < lanes; ++l) {
+                        slots[n] = ActiveFeature{c.features[first + l], activation[l]};
+                        n += d2[l] < cutoff2;
+                        nearOne |= d2[l] < sigma2;
+                    }
                 }
+                out.resize(n);
             }
             std::uint32_t d = 0;
             for (; d < numContinuous_; ++d) {  // odometer over the neighbour cells

@@ -15,6 +15,11 @@
 namespace verve::core {
 
 struct ActiveFeature {
+    // Deliberately leaves its fields uninitialised: the activation scan resizes its output to
+    // every candidate, then overwrites them, and value-initialising would cost a pass of its own.
+    ActiveFeature() noexcept {}  // NOLINT(cppcoreguidelines-pro-type-member-init)
+    ActiveFeature(std::uint32_t i, float a) noexcept : index(i), activation(a) {}
+
     std::uint32_t index;
     float activation;  // in (0, 1]
 };
@@ -45,8 +50,16 @@ public:
     std::uint32_t addFeature(std::uint64_t key, const float* centre);
 
 private:
+    // A cell keeps copies of its RBFs' centres next to their indices, in blocks of kLanes RBFs
+    // stored dimension by dimension ([block][dimension][lane]): the distance loop then runs
+    // across kLanes RBFs at once in SIMD registers.
+    static constexpr std::uint32_t kLanes = 8;
+    struct Cell {
+        std::vector<std::uint32_t> features;
+        std::vector<float> centres;  // blocks of numContinuous_ * kLanes floats
+    };
     struct Array {
-        std::unordered_map<std::uint64_t, std::vector<std::uint32_t>> cells;
+        std::unordered_map<std::uint64_t, Cell> cells;
     };
 
     std::uint64_t discreteKey(const std::int32_t* discrete) const;
@@ -57,6 +70,7 @@ private:
 
     std::vector<std::uint32_t> discreteCounts_;
     std::vector<bool> circular_;
+    std::vector<float> wrap_;  // 2 for circular sensors, 0 otherwise
     std::uint32_t numContinuous_;
     std::uint32_t resolution_;
     float sigma_;

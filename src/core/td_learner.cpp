@@ -15,12 +15,15 @@ float TdLearner::value(const WeightTable& w, const std::vector<ActiveFeature>& p
 }
 
 std::uint32_t TdLearner::chooseAction(const WeightTable& w, const std::vector<ActiveFeature>& phi, Rng& rng,
-                                      std::vector<float>& activations) const {
+                                      std::vector<float>& activations, float& value) const {
     activations.assign(numActions_, 0.0f);
+    float v = 0.0f;
     for (const auto& f : phi) {
-        const float* policy = w.row(f.index) + WeightLayout::kPolicy;
-        for (std::uint32_t a = 0; a < numActions_; ++a) activations[a] += policy[a] * f.activation;
+        const float* row = w.row(f.index);
+        v += row[WeightLayout::kValue] * f.activation;
+        for (std::uint32_t a = 0; a < numActions_; ++a) activations[a] += row[WeightLayout::kPolicy + a] * f.activation;
     }
+    value = v;
     float total = 0.0f;
     for (auto& y : activations) {
         y = 1.0f / (1.0f + std::exp(-y));
@@ -40,76 +43,74 @@ std::uint32_t TdLearner::chooseAction(const WeightTable& w, const std::vector<Ac
     return numActions_ - 1;
 }
 
-void TdLearner::train(WeightTable& w, float delta, TdRates rates) const {
-    if (delta == 0.0f) return;
-    const float dv = rates.value * delta;
-    const float dp = rates.policy * delta;
-    for (std::size_t slot = 0; slot < features_.size(); ++slot) {
-        float* row = w.row(features_[slot]);
-        const float* e = traces_.data() + slot * stride_;
-        row[WeightLayout::kValue] += dv * e[0];
-        for (std::uint32_t a = 0; a < numActions_; ++a) row[WeightLayout::kPolicy + a] += dp * e[1 + a];
-    }
-}
-
-void TdLearner::decay(float factor) {
-    std::size_t kept = 0;
-    for (std::size_t slot = 0; slot < features_.size(); ++slot) {
-        float* e = traces_.data() + slot * stride_;
-        float largest = 0.0f;
+void TdLearner::trainAndDecay(WeightTable& w, float delta, TdRates rates, float decay) {
+    // A trace row [value, policy[A]] lines up with the first 1 + A weights of its feature's row.
+    step_.assign(stride_, rates.policy * delta);
+    step_[0] = rates.value * delta;
+    std::uint32_t kept = 0;
+    for (std::uint32_t i = 0; i < liveCount_; ++i) {
+        const std::uint32_t feature = live_[i];
+        float* row = w.row(feature);
+        float* e = trace(feature);
         for (std::uint32_t k = 0; k < stride_; ++k) {
-            e[k] *= factor;
-            largest = std::max(largest, e[k]);
+            row[k] += step_[k] * e[k];
+            e[k] *= decay;
         }
-        const std::uint32_t feature = features_[slot];
-        if (largest < threshold_) {
-            slotOf_[feature] = -1;
-            continue;
-        }
-        if (kept != slot) {  // compact in place, keeping the order (deterministic sums)
-            features_[kept] = feature;
-            std::copy(e, e + stride_, traces_.data() + kept * stride_);
-        }
-        slotOf_[feature] = static_cast<std::int32_t>(kept);
-        ++kept;
+        // Branch-free compaction, in order, so results never depend on drop patterns.
+        const bool keep = e[0] >= threshold_;
+        const float scale = keep ? 1.0f : 0.0f;
+        for (std::uint32_t k = 0; k < stride_; ++k) e[k] *= scale;
+        live_[kept] = feature;
+        kept += keep;
     }
-    features_.resize(kept);
-    traces_.resize(kept * stride_);
+    liveCount_ = kept;
 }
 
-std::uint32_t TdLearner::slotFor(std::uint32_t feature) {
-    if (slotOf_[feature] >= 0) return static_cast<std::uint32_t>(slotOf_[feature]);
-    const auto slot = static_cast<std::uint32_t>(features_.size());
-    features_.push_back(feature);
-    traces_.resize(traces_.size() + stride_, 0.0f);
-    slotOf_[feature] = static_cast<std::int32_t>(slot);
-    return slot;
+void TdLearner::grow(std::uint32_t featureCount) {
+    if (live_.size() >= featureCount) return;
+    traces_.resize(std::size_t(featureCount) * stride_, 0.0f);
+    live_.resize(featureCount);
 }
 
 void TdLearner::mark(const std::vector<ActiveFeature>& phi, std::uint32_t action, std::uint32_t featureCount) {
-    if (slotOf_.size() < featureCount) slotOf_.resize(featureCount, -1);
+    grow(featureCount);
     for (const auto& f : phi) {
         if (f.activation < threshold_) continue;  // would be dropped at the next decay anyway
-        const std::uint32_t slot = slotFor(f.index);  // may grow traces_: take data() after it
-        float* e = traces_.data() + std::size_t(slot) * stride_;
+        float* e = trace(f.index);
+        live_[liveCount_] = f.index;
+        liveCount_ += e[0] == 0.0f;  // newly live (a live value trace is >= the threshold > 0)
         e[0] = std::max(e[0], f.activation);
         e[1 + action] = std::max(e[1 + action], f.activation);
     }
 }
 
 void TdLearner::clear() {
-    for (auto feature : features_) slotOf_[feature] = -1;
-    features_.clear();
-    traces_.clear();
+    for (std::uint32_t i = 0; i < liveCount_; ++i) std::fill_n(trace(live_[i]), stride_, 0.0f);
+    liveCount_ = 0;
+}
+
+std::vector<std::uint32_t> TdLearner::liveFeatures() const {
+    return std::vector<std::uint32_t>(live_.begin(), live_.begin() + liveCount_);
+}
+
+std::vector<float> TdLearner::liveTraces() const {
+    std::vector<float> out;
+    out.reserve(std::size_t(liveCount_) * stride_);
+    for (std::uint32_t i = 0; i < liveCount_; ++i) {
+        const float* e = traces_.data() + std::size_t(live_[i]) * stride_;
+        out.insert(out.end(), e, e + stride_);
+    }
+    return out;
 }
 
 void TdLearner::restore(const std::vector<std::uint32_t>& features, const std::vector<float>& traces,
                         std::uint32_t featureCount) {
     clear();
-    slotOf_.assign(featureCount, -1);
-    features_ = features;
-    traces_ = traces;
-    for (std::size_t slot = 0; slot < features_.size(); ++slot) slotOf_[features_[slot]] = static_cast<std::int32_t>(slot);
+    grow(featureCount);
+    for (std::size_t i = 0; i < features.size(); ++i) {
+        std::copy_n(traces.data() + i * stride_, stride_, trace(features[i]));
+        live_[liveCount_++] = features[i];
+    }
 }
 
 }  // namespace verve::core

@@ -2,8 +2,10 @@
 //
 // Critic: V(s) = sum_i w_i phi_i. Actor: one sigmoid neuron per action, y_a = 1 / (1 + e^-(sum_i w_ai phi_i)),
 // chosen by roulette in proportion to y_a. Both learn w += eta * delta * e. Traces are replacing
-// (e = max(e, phi); the actor's only for the chosen action), decay by gamma * lambda and are kept in a
-// sparse live list, dropped below a threshold, so work follows live traces, not the feature count.
+// (e = max(e, phi); the actor's only for the chosen action) and decay by gamma * lambda. Traces are
+// stored per feature, and a live list names the features whose trace is above the threshold, so
+// work follows live traces, not the feature count. A feature's value trace is never below its
+// policy traces (both take the max with the same phi and decay alike), so it alone decides liveness.
 #pragma once
 #include <cstdint>
 #include <vector>
@@ -24,35 +26,37 @@ public:
     TdLearner(std::uint32_t numActions, float traceThreshold);
 
     float value(const WeightTable& w, const std::vector<ActiveFeature>& phi) const;
-    // Sigmoid action activations y_a into probabilities (unnormalised) and a roulette choice.
+    // Roulette choice over the sigmoid action activations y_a (left in `activations`); one pass
+    // over the features also yields V(s) into `value`.
     std::uint32_t chooseAction(const WeightTable& w, const std::vector<ActiveFeature>& phi, Rng& rng,
-                               std::vector<float>& activations) const;
+                               std::vector<float>& activations, float& value) const;
 
-    // w += eta * delta * e over the live traces.
-    void train(WeightTable& w, float delta, TdRates rates) const;
-    // e *= factor; traces whose every component falls below the threshold are dropped.
-    void decay(float factor);
+    // w += eta * delta * e over the live traces, then e *= decay; traces whose every component
+    // falls below the threshold are dropped. One pass: both follow the live list.
+    void trainAndDecay(WeightTable& w, float delta, TdRates rates, float decay);
     // e = max(e, phi) for the critic; e_a = max(e_a, phi) for the chosen action's neuron.
     void mark(const std::vector<ActiveFeature>& phi, std::uint32_t action, std::uint32_t featureCount);
     void clear();
 
-    std::uint32_t liveCount() const { return static_cast<std::uint32_t>(features_.size()); }
+    std::uint32_t liveCount() const { return liveCount_; }
     std::uint32_t traceStride() const { return stride_; }
-    const std::vector<std::uint32_t>& liveFeatures() const { return features_; }
-    const std::vector<float>& liveTraces() const { return traces_; }
+    std::vector<std::uint32_t> liveFeatures() const;
+    std::vector<float> liveTraces() const;  // traceStride() values per live feature
     // Restores saved traces (validated by the caller).
     void restore(const std::vector<std::uint32_t>& features, const std::vector<float>& traces,
                  std::uint32_t featureCount);
 
 private:
-    std::uint32_t slotFor(std::uint32_t feature);
+    void grow(std::uint32_t featureCount);
+    float* trace(std::uint32_t feature) { return traces_.data() + std::size_t(feature) * stride_; }
 
     std::uint32_t numActions_;
     std::uint32_t stride_;  // 1 + numActions: value trace, then one per action
     float threshold_;
-    std::vector<std::uint32_t> features_;  // live trace -> feature
-    std::vector<float> traces_;            // live trace -> stride_ values
-    std::vector<std::int32_t> slotOf_;     // feature -> live trace slot, or -1
+    std::vector<float> traces_;         // per feature, stride_ values; zero unless live
+    std::vector<std::uint32_t> live_;   // live features in its first liveCount_ entries
+    std::uint32_t liveCount_ = 0;
+    std::vector<float> step_;           // eta * delta per trace component (scratch)
 };
 
 }  // namespace verve::core

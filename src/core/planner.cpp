@@ -1,0 +1,53 @@
+#include "core/planner.hpp"
+
+#include <utility>
+
+#include "core/curiosity.hpp"
+
+namespace verve::core {
+
+Planner::Planner(const AgentDescriptor& desc) : td_(desc.numActions, desc.traceThreshold) {
+    prediction_.discrete.resize(desc.discreteSensors.size());
+    prediction_.continuous.resize(desc.continuousSensors.size());
+}
+
+PlanResult Planner::run(const PlanSettings& s, const std::vector<ActiveFeature>& start, WeightTable& w,
+                        const StateRepresentation& rep, const PredictiveModel& model, Rng& rng) {
+    PlanResult result;
+    td_.clear();
+    phi_.assign(start.begin(), start.end());
+    float uncertainty = 0.0f;
+    while (result.steps < s.maxSteps && !phi_.empty()) {
+        float value = 0.0f;
+        const std::uint32_t action = td_.chooseAction(w, phi_, rng, activations_, value);
+        model.predict(w, phi_, action, prediction_);
+        uncertainty = s.accumulate ? uncertainty + prediction_.uncertainty : prediction_.uncertainty;
+        const float bonus = curiosityReward(s.curiosity, s.curiosityFactor, prediction_);
+        td_.mark(phi_, action, rep.featureCount());
+        const float v = value;
+
+        if (uncertainty > s.uncertaintyThreshold) {
+            // Too uncertain to trust the predicted successor. A novelty-curious agent still learns
+            // that this step leads into the unknown, as a terminal reward: the frontier attracts.
+            if (s.curiosity == CuriosityMode::Novelty) {
+                td_.trainAndDecay(w, bonus - v, s.rates, 0.0f);
+                result.curiosity += bonus;
+                ++result.steps;
+            }
+            break;
+        }
+        const float reward = prediction_.reward + bonus;
+        result.curiosity += bonus;
+        ++result.steps;
+        if (prediction_.terminal > 0.5f) {  // the trial ends: nothing to bootstrap from
+            td_.trainAndDecay(w, reward - v, s.rates, 0.0f);
+            break;
+        }
+        rep.find(prediction_.discrete.data(), prediction_.continuous.data(), next_);
+        td_.trainAndDecay(w, reward + s.gamma * td_.value(w, next_) - v, s.rates, s.traceDecay);
+        std::swap(phi_, next_);
+    }
+    return result;
+}
+
+}  // namespace verve::core

@@ -1,0 +1,205 @@
+#include "core/predictive_model.hpp"
+
+#include <algorithm>
+#include <cmath>
+
+namespace verve::core {
+namespace {
+
+// The two error averages behind learning progress learn at these fractions of eta_pred: the fast
+// one follows recent errors, the slow one remembers older ones; noise moves both alike.
+constexpr float kFastFraction = 0.5f;
+constexpr float kSlowFraction = 0.05f;
+
+std::uint32_t discreteOutputsFor(const AgentDescriptor& desc) {
+    if (desc.discretePrediction == DiscretePrediction::Ordinal) return static_cast<std::uint32_t>(desc.discreteSensors.size());
+    std::uint32_t n = 0;
+    for (auto c : desc.discreteSensors) n += c;
+    return n;
+}
+
+std::uint32_t blockSizeFor(const AgentDescriptor& desc) {
+    return static_cast<std::uint32_t>(desc.continuousSensors.size()) + discreteOutputsFor(desc) + 5;
+}
+
+float ordinalTarget(std::int32_t value, std::uint32_t count) {
+    return count > 1 ? -1.0f + 2.0f * static_cast<float>(value) / static_cast<float>(count - 1) : 0.0f;
+}
+
+// The shorter way round on a circular sensor (as the state representation measures distance).
+float wrapDifference(float diff) {
+    if (diff > 1.0f) return diff - 2.0f;
+    if (diff < -1.0f) return diff + 2.0f;
+    return diff;
+}
+
+float wrapInto(float v) {
+    while (v >= 1.0f) v -= 2.0f;
+    while (v < -1.0f) v += 2.0f;
+    return v;
+}
+
+}  // namespace
+
+PredictiveModel::PredictiveModel(const AgentDescriptor& desc)
+    : discreteCounts_(desc.discreteSensors),
+      categorical_(desc.discretePrediction == DiscretePrediction::Categorical),
+      tau_(desc.tauModel),
+      activationSum_(std::pow(2.5f, static_cast<float>(desc.continuousSensors.size()))),
+      invSigma2_(0.25f * static_cast<float>(desc.resolution) * static_cast<float>(desc.resolution)),
+      base_(WeightLayout::kPolicy + desc.numActions),
+      numContinuous_(static_cast<std::uint32_t>(desc.continuousSensors.size())),
+      discreteOutputs_(discreteOutputsFor(desc)) {
+    for (const auto& s : desc.continuousSensors) circular_.push_back(s.circular);
+    reward_ = numContinuous_ + discreteOutputs_;
+    terminal_ = reward_ + 1;
+    certainty_ = reward_ + 2;
+    fast_ = reward_ + 3;
+    slow_ = reward_ + 4;
+    block_ = blockSizeFor(desc);
+    outputs_.assign(block_, 0.0f);
+    targets_.assign(block_, 0.0f);
+    trained_.assign(block_, 0);
+}
+
+std::uint32_t PredictiveModel::columnsFor(const AgentDescriptor& desc) {
+    return desc.planning ? desc.numActions * blockSizeFor(desc) : 0;
+}
+
+float PredictiveModel::rate(float dt) const {
+    const float r = tau_ > 0.0f ? 1.0f - std::exp(-dt / tau_) : 1.0f;
+    return r / activationSum_;
+}
+
+void PredictiveModel::rawOutputs(const WeightTable& w, const std::vector<ActiveFeature>& phi,
+                                 std::uint32_t action) const {
+    std::fill(outputs_.begin(), outputs_.end(), 0.0f);
+    const std::uint32_t offset = base_ + action * block_;
+    for (const auto& f : phi) {
+        const float* row = w.row(f.index) + offset;
+        for (std::uint32_t j = 0; j < block_; ++j) outputs_[j] += row[j] * f.activation;
+    }
+}
+
+void PredictiveModel::predict(const WeightTable& w, const std::vector<ActiveFeature>& phi, std::uint32_t action,
+                              Prediction& out) const {
+    rawOutputs(w, phi, action);
+    out.continuous.resize(numContinuous_);
+    for (std::uint32_t d = 0; d < numContinuous_; ++d) {
+        const float v = outputs_[d];
+        out.continuous[d] = circular_[d] ? wrapInto(v) : std::clamp(v, -1.0f, 1.0f);
+    }
+    out.discrete.resize(discreteCounts_.size());
+    std::uint32_t column = numContinuous_;
+    for (std::size_t i = 0; i < discreteCounts_.size(); ++i) {
+        const std::uint32_t count = discreteCounts_[i];
+        if (categorical_) {
+            std::uint32_t best = 0;
+            for (std::uint32_t v = 1; v < count; ++v) {
+                if (outputs_[column + v] > outputs_[column + best]) best = v;
+            }
+            out.discrete[i] = static_cast<std::int32_t>(best);
+            column += count;
+        } else {
+            const float scaled = (std::clamp(outputs_[column], -1.0f, 1.0f) + 1.0f) * 0.5f * static_cast<float>(count - 1);
+            out.discrete[i] = static_cast<std::int32_t>(std::lround(scaled));
+            column += 1;
+        }
+    }
+    out.reward = std::clamp(outputs_[reward_], -1.0f, 1.0f);
+    out.terminal = std::clamp(outputs_[terminal_], 0.0f, 1.0f);
+    out.uncertainty = std::clamp(1.0f - outputs_[certainty_], 0.0f, 1.0f);
+    const float fastError = std::clamp(1.0f - outputs_[fast_], 0.0f, 1.0f);
+    const float slowError = std::clamp(1.0f - outputs_[slow_], 0.0f, 1.0f);
+    out.progress = slowError - fastError;
+}
+
+// Targets for one transition (discrete == nullptr: terminal, no next observation). Returns the
+// normalised squared error of the current outputs: each predicted quantity contributes one term
+// in [0, 1], and the terms are averaged. A continuous value one RBF width (sigma) off counts as
+// wholly wrong, as it would land on other features; a wrong discrete value counts 1, and the
+// reward's full range counts 1.
+float PredictiveModel::fillTargets(const std::int32_t* discrete, const float* continuous, float reward, bool terminal) {
+    std::fill(trained_.begin(), trained_.end(), std::uint8_t{0});
+    lastUncertainty_ = std::clamp(1.0f - outputs_[certainty_], 0.0f, 1.0f);
+    float sum = 0.0f;
+    std::uint32_t terms = 0;
+    if (!terminal) {
+        for (std::uint32_t d = 0; d < numContinuous_; ++d) {
+            float diff = continuous[d] - outputs_[d];
+            if (circular_[d]) diff = wrapDifference(diff);
+            targets_[d] = outputs_[d] + diff;
+            trained_[d] = 1;
+            sum += std::min(1.0f, diff * diff * invSigma2_);
+            ++terms;
+        }
+        std::uint32_t column = numContinuous_;
+        for (std::size_t i = 0; i < discreteCounts_.size(); ++i) {
+            const std::uint32_t count = discreteCounts_[i];
+            if (categorical_) {
+                float e = 0.0f;
+                for (std::uint32_t v = 0; v < count; ++v) {
+                    const float t = static_cast<std::int32_t>(v) == discrete[i] ? 1.0f : 0.0f;
+                    targets_[column + v] = t;
+                    trained_[column + v] = 1;
+                    e += (t - outputs_[column + v]) * (t - outputs_[column + v]);
+                }
+                sum += std::min(1.0f, 0.5f * e);  // a confident wrong value counts 1
+                column += count;
+            } else {
+                const float t = ordinalTarget(discrete[i], count);
+                targets_[column] = t;
+                trained_[column] = 1;
+                sum += std::min(1.0f, 0.25f * (t - outputs_[column]) * (t - outputs_[column]));
+                column += 1;
+            }
+            ++terms;
+        }
+    }
+    targets_[reward_] = reward;
+    targets_[terminal_] = terminal ? 1.0f : 0.0f;
+    trained_[reward_] = trained_[terminal_] = 1;
+    const float re = reward - outputs_[reward_];
+    const float te = targets_[terminal_] - outputs_[terminal_];
+    sum += std::min(1.0f, 0.25f * re * re) + std::min(1.0f, te * te);
+    terms += 2;
+    const float error = sum / static_cast<float>(terms);
+    // The error estimators learn toward 1 - error (zero weights mean fully uncertain).
+    targets_[certainty_] = targets_[fast_] = targets_[slow_] = 1.0f - error;
+    trained_[certainty_] = trained_[fast_] = trained_[slow_] = 1;
+    return error;
+}
+
+void PredictiveModel::applyDeltaRule(WeightTable& w, const std::vector<ActiveFeature>& phi, std::uint32_t action,
+                                     float rate) {
+    // One error per output, shared by every active feature: w += eta (d - y) x.
+    for (std::uint32_t j = 0; j < block_; ++j) targets_[j] = trained_[j] ? targets_[j] - outputs_[j] : 0.0f;
+    const float fastRate = rate * kFastFraction;
+    const float slowRate = rate * kSlowFraction;
+    const std::uint32_t offset = base_ + action * block_;
+    for (const auto& f : phi) {
+        float* row = w.row(f.index) + offset;
+        const float step = rate * f.activation;
+        for (std::uint32_t j = 0; j < fast_; ++j) row[j] += step * targets_[j];
+        row[fast_] += fastRate * f.activation * targets_[fast_];
+        row[slow_] += slowRate * f.activation * targets_[slow_];
+    }
+}
+
+float PredictiveModel::train(WeightTable& w, const std::vector<ActiveFeature>& phi, std::uint32_t action,
+                             const std::int32_t* discrete, const float* continuous, float reward, float rate) {
+    rawOutputs(w, phi, action);
+    const float error = fillTargets(discrete, continuous, reward, false);
+    applyDeltaRule(w, phi, action, rate);
+    return error;
+}
+
+float PredictiveModel::trainTerminal(WeightTable& w, const std::vector<ActiveFeature>& phi, std::uint32_t action,
+                                     float reward, float rate) {
+    rawOutputs(w, phi, action);
+    const float error = fillTargets(nullptr, nullptr, reward, true);
+    applyDeltaRule(w, phi, action, rate);
+    return error;
+}
+
+}  // namespace verve::core

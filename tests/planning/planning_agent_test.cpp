@@ -1,0 +1,80 @@
+// Planning through the public Agent: statistics, the step cap, snapshots, bad input.
+#include <gtest/gtest.h>
+
+#include "tasks/registry.hpp"
+#include "verve/agent.hpp"
+
+using namespace verve;
+using namespace verve::tasks;
+
+namespace {
+
+AgentDescriptor mazeAgent(std::uint32_t cap) {
+    AgentDescriptor d = findTask("maze2-planning")->make(1)->agentDescriptor();
+    d.maxPlanningSteps = cap;
+    return d;
+}
+
+}  // namespace
+
+TEST(PlanningAgent, FillsStatisticsAndRespectsTheCap) {
+    auto env = findTask("maze2-planning")->make(1);
+    Agent agent(mazeAgent(7));
+    std::uint32_t most = 0;
+    Observation obs(agent.descriptor());
+    for (int t = 0; t < 20; ++t) {
+        env->beginTrial(0);
+        float reward = 0.0f;
+        for (int i = 0; i < 2000; ++i) {
+            env->observe(obs);
+            const auto action = agent.update(reward, obs, 0.1f);
+            most = std::max(most, agent.stats().planningSteps);
+            const StepResult step = env->act(action);
+            if (step.terminal) {
+                agent.endEpisode(step.reward);
+                break;
+            }
+            reward = step.reward;
+        }
+    }
+    EXPECT_EQ(most, 7u);  // plans reach the cap once the maze is known, and never exceed it
+    EXPECT_GE(agent.stats().modelError, 0.0f);
+    EXPECT_FLOAT_EQ(agent.stats().curiosityReward, 0.0f);  // no curiosity configured
+}
+
+TEST(PlanningAgent, NonPlanningAgentsCarryNoModelColumns) {
+    AgentDescriptor d = mazeAgent(10);
+    d.planning = false;
+    Agent plain(d);
+    Agent planner(mazeAgent(10));
+    EXPECT_EQ(plain.snapshot().stride, 1u + 5u);
+    EXPECT_GT(planner.snapshot().stride, plain.snapshot().stride);
+}
+
+TEST(PlanningAgent, SnapshotRestoresTheModelAndTheSameFuture) {
+    auto env = findTask("curiosity-grid-curious")->make(1);
+    AgentDescriptor d = env->agentDescriptor();
+    Agent agent(d);
+    for (std::uint64_t t = 0; t < 5; ++t) runTrial(agent, *env, t);
+    Agent copy(agent.snapshot());
+    auto envCopy = findTask("curiosity-grid-curious")->make(1);
+    for (std::uint64_t t = 5; t < 8; ++t) {
+        const TrialResult a = runTrial(agent, *env, t);
+        const TrialResult b = runTrial(copy, *envCopy, t);
+        EXPECT_EQ(a.rewardSum, b.rewardSum);
+    }
+    EXPECT_EQ(agent.snapshot().weights, copy.snapshot().weights);
+}
+
+TEST(PlanningAgent, BadInputLeavesThePlannerUntouched) {
+    Agent agent(mazeAgent(10));
+    Observation obs(agent.descriptor());
+    agent.update(0.0f, obs, 0.1f);
+    const auto before = agent.snapshot().weights;
+    obs.discrete[0] = 42;
+    EXPECT_THROW(agent.update(-1.0f, obs, 0.1f), Error);
+    EXPECT_EQ(agent.snapshot().weights, before);
+    AgentDescriptor bad = mazeAgent(10);
+    bad.discretePrediction = static_cast<DiscretePrediction>(9);
+    EXPECT_THROW(Agent{bad}, Error);
+}

@@ -1,0 +1,143 @@
+// The predictive model on its own: exact one-shot learning with rate 1, categorical discrete
+// outputs, uncertainty that starts full and falls, terminal transitions.
+#include "core/predictive_model.hpp"
+
+#include <gtest/gtest.h>
+
+#include "core/state_representation.hpp"
+#include "core/weight_table.hpp"
+
+using namespace verve;
+using namespace verve::core;
+
+namespace {
+
+AgentDescriptor gridAgent() {
+    AgentDescriptor d;
+    d.addDiscreteSensor(4).addDiscreteSensor(3);
+    d.numActions = 2;
+    d.planning = true;
+    d.tauModel = 0.0f;
+    return d;
+}
+
+struct Fixture {
+    explicit Fixture(const AgentDescriptor& d) : desc(d), rep(d), model(d), weights(layoutFor(d)) {}
+    static WeightLayout layoutFor(const AgentDescriptor& d) {
+        WeightLayout l;
+        l.numActions = d.numActions;
+        l.modelColumns = PredictiveModel::columnsFor(d);
+        return l;
+    }
+    std::vector<ActiveFeature> features(std::vector<std::int32_t> discrete, std::vector<float> continuous = {}) {
+        std::vector<ActiveFeature> phi;
+        rep.activate(discrete.data(), continuous.data(), true, phi);
+        weights.resize(rep.featureCount());
+        return phi;
+    }
+    AgentDescriptor desc;
+    StateRepresentation rep;
+    PredictiveModel model;
+    WeightTable weights;
+};
+
+}  // namespace
+
+TEST(PredictiveModel, NeedsNoColumnsWithoutPlanning) {
+    AgentDescriptor d = gridAgent();
+    d.planning = false;
+    EXPECT_EQ(PredictiveModel::columnsFor(d), 0u);
+    d.planning = true;
+    // Per action: 4 + 3 categorical outputs, reward, terminal, certainty, fast and slow error.
+    EXPECT_EQ(PredictiveModel::columnsFor(d), 2u * (7u + 5u));
+    d.discretePrediction = DiscretePrediction::Ordinal;
+    EXPECT_EQ(PredictiveModel::columnsFor(d), 2u * (2u + 5u));
+}
+
+TEST(PredictiveModel, UnknownTransitionsAreFullyUncertain) {
+    Fixture f(gridAgent());
+    const auto phi = f.features({1, 2});
+    Prediction p;
+    f.model.predict(f.weights, phi, 0, p);
+    EXPECT_FLOAT_EQ(p.uncertainty, 1.0f);
+    EXPECT_FLOAT_EQ(p.progress, 0.0f);
+}
+
+TEST(PredictiveModel, RateOneLearnsADeterministicTransitionAtOnce) {
+    Fixture f(gridAgent());
+    const auto phi = f.features({1, 2});
+    const std::int32_t next[] = {3, 0};
+    const float firstError = f.model.train(f.weights, phi, 1, next, nullptr, -0.5f, 1.0f);
+    EXPECT_GT(firstError, 0.1f);
+    Prediction p;
+    f.model.predict(f.weights, phi, 1, p);
+    EXPECT_EQ(p.discrete, (std::vector<std::int32_t>{3, 0}));
+    EXPECT_FLOAT_EQ(p.reward, -0.5f);
+    EXPECT_FLOAT_EQ(p.terminal, 0.0f);
+    // The uncertainty estimate learned the error of the old prediction; a second identical
+    // transition is predicted exactly, and then the estimate falls to zero.
+    EXPECT_NEAR(p.uncertainty, firstError, 1e-6f);
+    EXPECT_FLOAT_EQ(f.model.train(f.weights, phi, 1, next, nullptr, -0.5f, 1.0f), 0.0f);
+    f.model.predict(f.weights, phi, 1, p);
+    EXPECT_FLOAT_EQ(p.uncertainty, 0.0f);
+    EXPECT_GT(p.progress, 0.0f);  // the error fell: learning progress
+    // The other action learned nothing.
+    f.model.predict(f.weights, phi, 0, p);
+    EXPECT_FLOAT_EQ(p.uncertainty, 1.0f);
+}
+
+TEST(PredictiveModel, TerminalTransitionsTeachTheEndAndTheReward) {
+    Fixture f(gridAgent());
+    const auto phi = f.features({0, 0});
+    f.model.trainTerminal(f.weights, phi, 0, 1.0f, 1.0f);
+    Prediction p;
+    f.model.predict(f.weights, phi, 0, p);
+    EXPECT_FLOAT_EQ(p.terminal, 1.0f);
+    EXPECT_FLOAT_EQ(p.reward, 1.0f);
+}
+
+TEST(PredictiveModel, NoiseKeepsUncertaintyButNotProgress) {
+    Fixture f(gridAgent());
+    const auto phi = f.features({2, 1});
+    // A screen showing a random value: its error never falls.
+    std::uint32_t state = 12345;
+    Prediction p;
+    float uncertaintySum = 0.0f, progressSum = 0.0f;
+    for (int i = 0; i < 2000; ++i) {
+        state = state * 1664525u + 1013904223u;
+        const std::int32_t next[] = {static_cast<std::int32_t>((state >> 16) % 4), 0};
+        f.model.train(f.weights, phi, 0, next, nullptr, 0.0f, 1.0f);
+        if (i >= 1000) {
+            f.model.predict(f.weights, phi, 0, p);
+            uncertaintySum += p.uncertainty;
+            progressSum += p.progress;
+        }
+    }
+    EXPECT_GT(uncertaintySum / 1000.0f, 0.1f);
+    EXPECT_LT(std::abs(progressSum / 1000.0f), 0.05f);
+}
+
+TEST(PredictiveModel, ContinuousPredictionsConvergeWithTheDeltaRule) {
+    AgentDescriptor d;
+    d.addContinuousSensor();
+    d.numActions = 1;
+    d.planning = true;
+    d.resolution = 10;
+    Fixture f(d);
+    // x -> x + 0.1 on a few sample points: the linear network over RBFs fits it.
+    const float xs[] = {-0.6f, -0.2f, 0.2f, 0.6f};
+    std::vector<std::vector<ActiveFeature>> phis;
+    for (float x : xs) phis.push_back(f.features({}, {x}));
+    for (int epoch = 0; epoch < 300; ++epoch) {
+        for (std::size_t i = 0; i < 4; ++i) {
+            const float next = xs[i] + 0.1f;
+            f.model.train(f.weights, phis[i], 0, nullptr, &next, 0.0f, f.model.rate(0.1f));
+        }
+    }
+    Prediction p;
+    for (std::size_t i = 0; i < 4; ++i) {
+        f.model.predict(f.weights, phis[i], 0, p);
+        EXPECT_NEAR(p.continuous[0], xs[i] + 0.1f, 0.02f);
+        EXPECT_LT(p.uncertainty, 0.1f);
+    }
+}
