@@ -39,4 +39,3 @@ void plannedUpdate(benchmark::State& state) {
 }  // namespace
 
 BENCHMARK(plannedUpdate)->Arg(0)->Arg(10)->Arg(50)->ArgName("max_planning_steps");
-BENCHMARK_MAIN();

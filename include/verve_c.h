@@ -71,6 +71,11 @@ typedef enum verve_curiosity {
     VERVE_CURIOSITY_PROGRESS = 2 /* reward for falling prediction error (ignores pure noise) */
 } verve_curiosity;
 
+typedef enum verve_discrete_prediction {
+    VERVE_DISCRETE_PREDICTION_CATEGORICAL = 0, /* one model output per value (default) */
+    VERVE_DISCRETE_PREDICTION_ORDINAL = 1      /* the original's single rounded scalar */
+} verve_discrete_prediction;
+
 typedef enum verve_sensor_kind {
     VERVE_SENSOR_DISCRETE = 0,
     VERVE_SENSOR_CONTINUOUS = 1
@@ -99,12 +104,15 @@ typedef struct verve_agent_desc {
     float trace_threshold;    /* default 0.01 */
     uint64_t seed;
 
-    uint32_t planning;                     /* 0 or 1 */
+    uint32_t planning;                     /* 0 or 1 (default 0) */
     float tau_model;                       /* seconds (default 0: learning rate 1) */
     uint32_t max_planning_steps;           /* default 10 */
-    float planning_uncertainty_threshold;  /* default 0.1 */
-    uint32_t curiosity;                    /* verve_curiosity */
-    float curiosity_factor;                /* default 3 */
+    float planning_uncertainty_threshold;  /* default 0.5 (uncertainty is a normalised error in [0, 1]) */
+    uint32_t curiosity;                    /* verve_curiosity (default NONE) */
+    float curiosity_factor;                /* default 5 */
+    uint32_t planning_accumulates_uncertainty; /* 1 (default): a plan stops on its summed uncertainty */
+    uint32_t learn_from_real_steps;        /* 1 (default, Dyna): real steps train too, not only plans */
+    uint32_t discrete_prediction;          /* verve_discrete_prediction (default CATEGORICAL) */
 } verve_agent_desc;
 
 /* The sizes of verve_agent_desc a library accepts in struct_size: each release's full struct.

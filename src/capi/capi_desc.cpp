@@ -48,6 +48,9 @@ verve_agent_desc defaultDesc() noexcept {
     d.planning_uncertainty_threshold = defaults.planningUncertaintyThreshold;
     d.curiosity = static_cast<std::uint32_t>(defaults.curiosity);
     d.curiosity_factor = defaults.curiosityFactor;
+    d.planning_accumulates_uncertainty = defaults.planningAccumulatesUncertainty ? 1u : 0u;
+    d.learn_from_real_steps = defaults.learnFromRealSteps ? 1u : 0u;
+    d.discrete_prediction = static_cast<std::uint32_t>(defaults.discretePrediction);
     return d;
 }
 
@@ -73,6 +76,9 @@ AgentDescriptor toDescriptor(const verve_agent_desc& in) {
     }
     requireFlag(d.rbf_allocation, "rbf_allocation");
     requireFlag(d.planning, "planning");
+    requireFlag(d.planning_accumulates_uncertainty, "planning_accumulates_uncertainty");
+    requireFlag(d.learn_from_real_steps, "learn_from_real_steps");
+    requireFlag(d.discrete_prediction, "discrete_prediction");
     if (d.curiosity > VERVE_CURIOSITY_PROGRESS) refuse("curiosity must be 0, 1 or 2, not " + std::to_string(d.curiosity));
 
     AgentDescriptor out;
@@ -96,6 +102,9 @@ AgentDescriptor toDescriptor(const verve_agent_desc& in) {
     out.planningUncertaintyThreshold = d.planning_uncertainty_threshold;
     out.curiosity = static_cast<CuriosityMode>(d.curiosity);
     out.curiosityFactor = d.curiosity_factor;
+    out.planningAccumulatesUncertainty = d.planning_accumulates_uncertainty != 0;
+    out.learnFromRealSteps = d.learn_from_real_steps != 0;
+    out.discretePrediction = static_cast<DiscretePrediction>(d.discrete_prediction);
     out.validate();
     return out;
 }
@@ -126,6 +135,9 @@ void writeDesc(const AgentDescriptor& in, verve_agent_desc& out) {
     d.planning_uncertainty_threshold = in.planningUncertaintyThreshold;
     d.curiosity = static_cast<std::uint32_t>(in.curiosity);
     d.curiosity_factor = in.curiosityFactor;
+    d.planning_accumulates_uncertainty = in.planningAccumulatesUncertainty ? 1u : 0u;
+    d.learn_from_real_steps = in.learnFromRealSteps ? 1u : 0u;
+    d.discrete_prediction = static_cast<std::uint32_t>(in.discretePrediction);
     std::memcpy(&out, &d, size);
 }
 

@@ -226,7 +226,33 @@ TEST(CApiDesc, DefaultsMatchTheDocumentedOnes) {
     EXPECT_FLOAT_EQ(d.tau_discount, 1.0f);
     EXPECT_FLOAT_EQ(d.policy_multiplier, 5.0f);
     EXPECT_EQ(d.max_planning_steps, 10u);
-    EXPECT_FLOAT_EQ(d.curiosity_factor, 3.0f);
+    EXPECT_FLOAT_EQ(d.planning_uncertainty_threshold, 0.5f);
+    EXPECT_FLOAT_EQ(d.curiosity_factor, 5.0f);
+    EXPECT_EQ(d.planning_accumulates_uncertainty, 1u);
+    EXPECT_EQ(d.learn_from_real_steps, 1u);
+    EXPECT_EQ(d.discrete_prediction, static_cast<uint32_t>(VERVE_DISCRETE_PREDICTION_CATEGORICAL));
+}
+
+TEST(CApiDesc, PlanningVariantsReachTheAgent) {
+    verve_agent_desc d;
+    verve_agent_desc_default(&d);
+    d.num_discrete_sensors = 1;
+    d.discrete_sensor_values[0] = 4;
+    d.planning = 1;
+    d.planning_accumulates_uncertainty = 0;
+    d.learn_from_real_steps = 0;
+    d.discrete_prediction = VERVE_DISCRETE_PREDICTION_ORDINAL;
+    verve_agent* agent = nullptr;
+    ASSERT_EQ(verve_agent_create(&d, &agent), VERVE_OK) << verve_last_error();
+    verve_agent_desc back;
+    verve_agent_desc_default(&back);
+    ASSERT_EQ(verve_agent_get_desc(agent, &back), VERVE_OK);
+    EXPECT_EQ(back.planning_accumulates_uncertainty, 0u);
+    EXPECT_EQ(back.learn_from_real_steps, 0u);
+    EXPECT_EQ(back.discrete_prediction, static_cast<uint32_t>(VERVE_DISCRETE_PREDICTION_ORDINAL));
+    verve_agent_destroy(agent);
+    d.discrete_prediction = 2;
+    EXPECT_EQ(verve_agent_create(&d, &agent), VERVE_ERROR_INVALID_ARGUMENT);
 }
 
 TEST(CApiDesc, AnOldSmallerStructIsAcceptedAndTheRestDefaulted) {
@@ -247,7 +273,7 @@ TEST(CApiDesc, AnOldSmallerStructIsAcceptedAndTheRestDefaulted) {
     EXPECT_EQ(full.num_actions, 4u);
     EXPECT_EQ(full.planning, 0u);  // defaults, not the 0xAB garbage
     EXPECT_EQ(full.max_planning_steps, 10u);
-    EXPECT_FLOAT_EQ(full.curiosity_factor, 3.0f);
+    EXPECT_FLOAT_EQ(full.curiosity_factor, 5.0f);
 
     // get_desc into an old struct writes only its bytes.
     std::memset(memory, 0xCD, sizeof memory);

@@ -21,9 +21,12 @@ namespace Verve.Tests
             Assert.False(o.Planning);
             Assert.Equal(0f, o.TauModel);
             Assert.Equal(10, o.MaxPlanningSteps);
-            Assert.Equal(0.1f, o.PlanningUncertaintyThreshold);
+            Assert.Equal(0.5f, o.PlanningUncertaintyThreshold);
             Assert.Equal(Curiosity.None, o.Curiosity);
-            Assert.Equal(3f, o.CuriosityFactor);
+            Assert.Equal(5f, o.CuriosityFactor);
+            Assert.True(o.PlanningAccumulatesUncertainty);
+            Assert.True(o.LearnFromRealSteps);
+            Assert.Equal(DiscretePrediction.Categorical, o.DiscretePrediction);
             Assert.True(o.Actions > 0);
         }
 

@@ -29,6 +29,9 @@ int main(void) {
     FIELD(verve_agent_desc, planning_uncertainty_threshold);
     FIELD(verve_agent_desc, curiosity);
     FIELD(verve_agent_desc, curiosity_factor);
+    FIELD(verve_agent_desc, planning_accumulates_uncertainty);
+    FIELD(verve_agent_desc, learn_from_real_steps);
+    FIELD(verve_agent_desc, discrete_prediction);
 
     SIZE(verve_agent_stats);
     FIELD(verve_agent_stats, struct_size);

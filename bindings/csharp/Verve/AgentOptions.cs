@@ -52,6 +52,9 @@ namespace Verve
             PlanningUncertaintyThreshold = d.planning_uncertainty_threshold;
             Curiosity = (Curiosity)d.curiosity;
             CuriosityFactor = d.curiosity_factor;
+            PlanningAccumulatesUncertainty = d.planning_accumulates_uncertainty != 0;
+            LearnFromRealSteps = d.learn_from_real_steps != 0;
+            DiscretePrediction = (DiscretePrediction)d.discrete_prediction;
         }
 
         /// <summary>Value count of each discrete sensor, in observation order.</summary>
@@ -105,6 +108,15 @@ namespace Verve
         /// <summary>Curiosity reward = factor * uncertainty (or progress).</summary>
         public float CuriosityFactor { get; set; }
 
+        /// <summary>A plan stops on its summed uncertainty (true, the original's rule) or on one step's.</summary>
+        public bool PlanningAccumulatesUncertainty { get; set; }
+
+        /// <summary>Real steps train the critic and actor too, not only plans (Dyna; default true).</summary>
+        public bool LearnFromRealSteps { get; set; }
+
+        /// <summary>How the model predicts discrete sensors.</summary>
+        public DiscretePrediction DiscretePrediction { get; set; }
+
         /// <summary>Adds a discrete sensor reading integers 0 .. <paramref name="values"/> - 1.</summary>
         public AgentOptions AddDiscreteSensor(int values)
         {
@@ -155,6 +167,9 @@ namespace Verve
             d.planning_uncertainty_threshold = PlanningUncertaintyThreshold;
             d.curiosity = (uint)Curiosity;
             d.curiosity_factor = CuriosityFactor;
+            d.planning_accumulates_uncertainty = PlanningAccumulatesUncertainty ? 1u : 0u;
+            d.learn_from_real_steps = LearnFromRealSteps ? 1u : 0u;
+            d.discrete_prediction = (uint)DiscretePrediction;
             return d;
         }
 

@@ -20,6 +20,15 @@ namespace Verve
         Progress = 2,
     }
 
+    /// <summary>How the predictive model predicts a discrete sensor (<c>verve_discrete_prediction</c>).</summary>
+    public enum DiscretePrediction : uint
+    {
+        /// <summary>One output per value; the largest wins (default).</summary>
+        Categorical = 0,
+        /// <summary>The original library's single scalar, rounded to the nearest value.</summary>
+        Ordinal = 1,
+    }
+
     /// <summary>Which kind of sensor a <see cref="ValueAxis"/> sweeps (<c>verve_sensor_kind</c>).</summary>
     public enum SensorKind : uint
     {

@@ -105,6 +105,7 @@ typedef struct lv_field {
 
 static const char* const lv_allocation_names[] = {"dynamic", "full", NULL};
 static const char* const lv_curiosity_names[] = {"none", "novelty", "progress", NULL};
+static const char* const lv_prediction_names[] = {"categorical", "ordinal", NULL};
 
 #define LV_FIELD(name, member, kind, names) {name, offsetof(verve_agent_desc, member), kind, names}
 static const lv_field lv_fields[] = {
@@ -123,6 +124,9 @@ static const lv_field lv_fields[] = {
     LV_FIELD("planning_uncertainty_threshold", planning_uncertainty_threshold, LV_FLOAT, NULL),
     LV_FIELD("curiosity", curiosity, LV_ENUM, lv_curiosity_names),
     LV_FIELD("curiosity_factor", curiosity_factor, LV_FLOAT, NULL),
+    LV_FIELD("planning_accumulates_uncertainty", planning_accumulates_uncertainty, LV_BOOL, NULL),
+    LV_FIELD("learn_from_real_steps", learn_from_real_steps, LV_BOOL, NULL),
+    LV_FIELD("discrete_prediction", discrete_prediction, LV_ENUM, lv_prediction_names),
 };
 #define LV_FIELD_COUNT (sizeof lv_fields / sizeof lv_fields[0])
 

@@ -35,6 +35,9 @@ namespace Verve.Native
         public float planning_uncertainty_threshold;
         public uint curiosity;
         public float curiosity_factor;
+        public uint planning_accumulates_uncertainty;
+        public uint learn_from_real_steps;
+        public uint discrete_prediction;
     }
 
     [StructLayout(LayoutKind.Sequential)]
