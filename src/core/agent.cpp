@@ -43,6 +43,9 @@ StepConstants Agent::Impl::constantsFor(float dt) const {
     k.traceDecay = k.gamma * decayFromTimeConstant(dt, desc.tauEligibility);
     k.rates.value = rateFromTimeConstant(dt, desc.tauValue) / rep.activationSum();
     k.rates.policy = desc.policyMultiplier * k.rates.value;
+    // Rewards are clamped to [-1, 1]; curiosity adds up to its factor on imagined steps.
+    const float rewardBound = 1.0f + (desc.planning && desc.curiosity != CuriosityMode::None ? desc.curiosityFactor : 0.0f);
+    k.valueBound = core::valueBound(rewardBound, k.gamma);
     return k;
 }
 
@@ -70,6 +73,7 @@ void Agent::Impl::plan(const StepConstants& k) {
     p.gamma = k.gamma;
     p.traceDecay = k.traceDecay;
     p.rates = k.rates;
+    p.valueBound = k.valueBound;
     const core::PlanResult result = planner.run(p, current, weights, rep, model, rng);
     stats.planningSteps = result.steps;
     stats.curiosityReward = result.curiosity;
@@ -110,7 +114,8 @@ std::uint32_t Agent::update(float reward, ObservationView obs, float dt) {
         if (s.learnsFromRealSteps()) {
             // V(s) is the value the previous update left in stats.value: no weight changes
             // between two updates (endEpisode, resets and restores clear or recompute it).
-            const float delta = r + k.gamma * s.td.value(s.weights, s.current) - s.stats.value;
+            const float next = core::bounded(s.td.value(s.weights, s.current), k.valueBound);
+            const float delta = r + k.gamma * next - core::bounded(s.stats.value, k.valueBound);
             s.td.trainAndDecay(s.weights, delta, k.rates, k.traceDecay);
             s.stats.tdError = delta;
         }
@@ -141,8 +146,9 @@ void Agent::endEpisode(float finalReward) {
     if (s.learning && s.hasPrevious && s.learnsFromRealSteps()) {
         // Terminal: nothing lies beyond, so no value is bootstrapped (delta = r - V(s)).
         // The transition lasted as long as the step that chose its action: the last dt.
-        const float delta = r - s.td.value(s.weights, s.previous);
-        s.td.trainAndDecay(s.weights, delta, s.constantsFor(s.lastDt).rates, 0.0f);
+        const StepConstants k = s.constantsFor(s.lastDt);
+        const float delta = r - core::bounded(s.td.value(s.weights, s.previous), k.valueBound);
+        s.td.trainAndDecay(s.weights, delta, k.rates, 0.0f);
         s.stats.tdError = delta;
     }
     s.resetShortTermMemory();

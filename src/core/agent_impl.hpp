@@ -19,6 +19,7 @@ struct StepConstants {
     float gamma = 0.0f;        // e^(-dt / tau_discount)
     float traceDecay = 0.0f;   // gamma * lambda, lambda = e^(-dt / tau_eligibility)
     core::TdRates rates;       // (1 - e^(-dt / tau_value)) / sum, times k for the policy
+    float valueBound = 0.0f;   // largest possible |V|: TD errors bootstrap only from values within it
 };
 
 struct Agent::Impl {

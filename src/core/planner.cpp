@@ -24,7 +24,7 @@ PlanResult Planner::run(const PlanSettings& s, const std::vector<ActiveFeature>&
         uncertainty = s.accumulate ? uncertainty + prediction_.uncertainty : prediction_.uncertainty;
         const float bonus = curiosityReward(s.curiosity, s.curiosityFactor, prediction_);
         td_.mark(phi_, action, rep.featureCount());
-        const float v = value;
+        const float v = bounded(value, s.valueBound);
 
         if (uncertainty > s.uncertaintyThreshold) {
             // Too uncertain to trust the predicted successor. A novelty-curious agent still learns
@@ -44,7 +44,7 @@ PlanResult Planner::run(const PlanSettings& s, const std::vector<ActiveFeature>&
             break;
         }
         rep.find(prediction_.discrete.data(), prediction_.continuous.data(), next_);
-        td_.trainAndDecay(w, reward + s.gamma * td_.value(w, next_) - v, s.rates, s.traceDecay);
+        td_.trainAndDecay(w, reward + s.gamma * bounded(td_.value(w, next_), s.valueBound) - v, s.rates, s.traceDecay);
         std::swap(phi_, next_);
     }
     return result;

@@ -30,6 +30,7 @@ struct PlanSettings {
     float gamma = 0.0f;
     float traceDecay = 0.0f;
     TdRates rates;
+    float valueBound = 0.0f;  // TD errors bootstrap only from values within it (td_learner.hpp)
 };
 
 struct PlanResult {

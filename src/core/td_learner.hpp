@@ -7,7 +7,9 @@
 // work follows live traces, not the feature count. A feature's value trace is never below its
 // policy traces (both take the max with the same phi and decay alike), so it alone decides liveness.
 #pragma once
+#include <algorithm>
 #include <cstdint>
+#include <limits>
 #include <vector>
 
 #include "core/rng.hpp"
@@ -20,6 +22,15 @@ struct TdRates {
     float value = 0.0f;   // eta_value
     float policy = 0.0f;  // eta_policy = k * eta_value
 };
+
+// No state is worth more, in size, than the largest reward discounted forever: rewardBound / (1 - gamma).
+// Unnormalised RBFs can extrapolate beyond it (their activations add up to more between trained
+// points than at a border), and such an impossible value must not bootstrap a TD error: next to a
+// wall it punished moving away until an agent stayed stuck there for good (docs/algorithm.md).
+inline float valueBound(float rewardBound, float gamma) {
+    return gamma < 1.0f ? rewardBound / (1.0f - gamma) : std::numeric_limits<float>::infinity();
+}
+inline float bounded(float value, float bound) { return std::clamp(value, -bound, bound); }
 
 class TdLearner {
 public:
