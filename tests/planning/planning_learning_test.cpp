@@ -42,10 +42,10 @@ TEST(PlanningLearning, ModelErrorFallsTowardZero) {
     EXPECT_LT(late, 0.01f);  // a deterministic maze is learned exactly (rate 1)
 }
 
-// Known gap (docs/planning.md; the KnownGap convention: tests/learning/hot_plate_learning_test.cpp):
-// continuous planning reaches the goal in most late trials (the original never did) but 25% still
-// hit the cap and it is not yet faster than RL alone. Kept, not weakened.
-TEST(KnownGapPlanningLearning, PlanningWorksWithContinuousSensors) {
+// The original's continuous planning never reached the goal. Ours does on these seeds (38 steps over
+// trials 41-50); over 10 runs 90% of late trials reach it (docs/planning.md), still not faster than RL
+// alone. Passing since the value bound of docs/algorithm.md.
+TEST(PlanningLearning, PlanningWorksWithContinuousSensors) {
     // The original's continuous planning runs all hit the 10,000-step cap.
     const LearningCurve c = maze2("maze2-continuous", 4, [](AgentDescriptor& d) {
         d.planning = true;
