@@ -28,7 +28,8 @@ void Bandit::observe(Observation& /*out: there are no sensors*/) const {}
 StepResult Bandit::act(std::uint32_t action) {
     if (action >= means_.size()) throw std::invalid_argument("Bandit::act: no such lever");
     lastAction_ = action;
-    return StepResult{static_cast<float>(means_[action] + noise_.normal()), true};
+    lastPayoff_ = static_cast<float>(means_[action] + noise_.normal());
+    return StepResult{lastPayoff_, false};
 }
 
 }  // namespace verve::tasks

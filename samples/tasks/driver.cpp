@@ -28,7 +28,8 @@ TrialResult runTrial(Agent& agent, Environment& env, std::uint64_t seed) {
     Observation obs(agent.descriptor());
     const float dt = env.agentStep();
     const std::uint32_t cap = env.maxStepsPerTrial();
-    float reward = 0.0f;
+    const bool continuing = task != nullptr && task->continuing();
+    float reward = continuing ? task->carriedReward() : 0.0f;
     while (result.steps < cap) {
         env.observe(obs);
         const std::uint32_t action = agent.update(reward, obs, dt);
@@ -42,7 +43,7 @@ TrialResult runTrial(Agent& agent, Environment& env, std::uint64_t seed) {
         }
         reward = step.reward;
     }
-    if (!result.terminal) agent.resetShortTermMemory();
+    if (!result.terminal && !continuing) agent.resetShortTermMemory();
     if (task != nullptr) result.succeeded = task->succeeded();
     return result;
 }

@@ -27,6 +27,11 @@ public:
     // True when beginTrial placed the agent where the trial is already over (a hot plate start
     // inside a safe zone): such a trial takes 0 steps and the agent is not consulted.
     virtual bool finishedAtStart() const { return false; }
+    // A continuing task never ends: its trials are slices of one stream of steps. The agent keeps
+    // its short-term memory across trials, and the reward of a slice's last step reaches it with the
+    // next slice's first update (carriedReward), so nothing is learned as if the stream had ended.
+    virtual bool continuing() const { return false; }
+    virtual float carriedReward() const { return 0.0f; }
 
 protected:
     AgentDescriptor settings_;

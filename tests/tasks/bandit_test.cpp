@@ -28,7 +28,8 @@ TEST(Bandit, PayoffsAreNoisyAroundTheLeverMean) {
         Bandit bandit(static_cast<std::uint64_t>(r));
         bandit.beginTrial(static_cast<std::uint64_t>(r) * 7 + 3);
         const StepResult s = bandit.act(0);
-        EXPECT_TRUE(s.terminal);
+        EXPECT_FALSE(s.terminal);  // continuing: pulls never end the stream
+        EXPECT_EQ(bandit.carriedReward(), s.reward);
         const double noise = s.reward - bandit.means()[0];
         meanSum += noise;
         meanSq += noise * noise;

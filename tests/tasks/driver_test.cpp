@@ -1,7 +1,9 @@
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <stdexcept>
 
+#include "tasks/bandit.hpp"
 #include "tasks/curiosity_grid.hpp"
 #include "tasks/driver.hpp"
 #include "tasks/hot_plate.hpp"
@@ -29,6 +31,19 @@ TEST(RunTrial, CappedTrialIsNotTerminal) {
     EXPECT_FALSE(r.terminal);
     EXPECT_EQ(r.steps, 100u);
     EXPECT_EQ(agent.stats().steps, 100u);
+}
+
+TEST(RunTrial, ContinuingTaskCarriesTheRewardAndTheShortTermMemory) {
+    Bandit bandit(3);
+    verve::Agent agent(bandit.agentDescriptor());
+    const TrialResult first = runTrial(agent, bandit, 1);
+    EXPECT_FALSE(first.terminal);
+    EXPECT_EQ(agent.stats().liveTraces, 1u);  // not reset: the next pull bootstraps from this one
+    const float paid = bandit.carriedReward();
+    EXPECT_EQ(static_cast<float>(first.rewardSum), paid);
+    runTrial(agent, bandit, 2);
+    // The second update received the first pull's payoff: delta = r + gamma V - V with V = 0.
+    EXPECT_FLOAT_EQ(agent.tdError(), std::clamp(paid, -1.0f, 1.0f));
 }
 
 TEST(RunTrial, StartInsideTheSafeZoneTakesNoSteps) {
