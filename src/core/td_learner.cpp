@@ -67,9 +67,10 @@ void TdLearner::trainAndDecay(WeightTable& w, float delta, TdRates rates, float 
 }
 
 void TdLearner::grow(std::uint32_t featureCount) {
-    if (live_.size() >= featureCount) return;
+    // One spare live slot: mark() writes a candidate entry before it knows whether it is new.
+    if (live_.size() > featureCount) return;
     traces_.resize(std::size_t(featureCount) * stride_, 0.0f);
-    live_.resize(featureCount);
+    live_.resize(std::size_t(featureCount) + 1);
 }
 
 void TdLearner::mark(const std::vector<ActiveFeature>& phi, std::uint32_t action, std::uint32_t featureCount) {
