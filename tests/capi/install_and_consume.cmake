@@ -1,6 +1,8 @@
 # Installs the build into a fresh prefix, then builds and runs consumers against the installed
 # tree only: with find_package(verve) (C and C++ targets) and with pkg-config (C).
-# Usage: cmake -DBUILD_DIR=.. -DCONSUMER=.. -DWORK=.. -DGENERATOR=.. -DC_COMPILER=.. -DPKG_CONFIG=.. -P install_and_consume.cmake
+# Usage: cmake -DBUILD_DIR=.. -DCONSUMER=.. -DWORK=.. -DGENERATOR=.. -DC_COMPILER=.. -DPKG_CONFIG=..
+#              [-DC_FLAGS=.. -DCXX_FLAGS=.. -DLINK_FLAGS=..] -P install_and_consume.cmake
+# The flags are the tested build's own (a sanitizer build's consumers must be instrumented too).
 function(run)
   execute_process(COMMAND ${ARGN} RESULT_VARIABLE rc OUTPUT_VARIABLE out ERROR_VARIABLE err)
   if(NOT rc EQUAL 0)
@@ -32,7 +34,8 @@ get_filename_component(lib_dir ${lib} DIRECTORY)
 
 # 1. find_package(verve COMPONENTS cpp): verve::verve (C) and verve::verve_cpp (C++).
 run(${CMAKE_COMMAND} -S ${CONSUMER} -B ${WORK}/build -G ${GENERATOR} -DCMAKE_PREFIX_PATH=${prefix}
-    -DCMAKE_BUILD_TYPE=Release)
+    -DCMAKE_BUILD_TYPE=Release "-DCMAKE_C_FLAGS=${C_FLAGS}" "-DCMAKE_CXX_FLAGS=${CXX_FLAGS}"
+    "-DCMAKE_EXE_LINKER_FLAGS=${LINK_FLAGS}")
 run(${CMAKE_COMMAND} --build ${WORK}/build)
 run(${WORK}/build/consumer_c)
 if(NOT run_output MATCHES "consumer_c: ok")
@@ -58,8 +61,9 @@ run(${PKG_CONFIG} --libs verve)
 string(STRIP "${run_output}" libs_flags)
 separate_arguments(cflags UNIX_COMMAND "${cflags}")
 separate_arguments(libs_flags UNIX_COMMAND "${libs_flags}")
-run(${C_COMPILER} -std=c99 -Wall -Wextra -pedantic -Werror ${cflags} ${CONSUMER}/consumer.c ${libs_flags}
-    -o ${WORK}/consumer_pkgconfig)
+separate_arguments(build_flags UNIX_COMMAND "${C_FLAGS} ${LINK_FLAGS}")
+run(${C_COMPILER} -std=c99 -Wall -Wextra -pedantic -Werror ${build_flags} ${cflags} ${CONSUMER}/consumer.c
+    ${libs_flags} -o ${WORK}/consumer_pkgconfig)
 run(${CMAKE_COMMAND} -E env LD_LIBRARY_PATH=${lib_dir} ${WORK}/consumer_pkgconfig)
 if(NOT run_output MATCHES "consumer_c: ok")
   message(FATAL_ERROR "the pkg-config consumer did not report ok")
