@@ -128,76 +128,87 @@ std::uint32_t StateRepresentation::activate(const std::int32_t* discrete, const 
     return 1;
 }
 
-bool StateRepresentation::find(const std::int32_t* discrete, const float* continuous,
-                               std::vector<ActiveFeature>& out) const {
-    out.clear();
-    const std::uint64_t key = discreteKey(discrete);
-    auto arrayIt = arrays_.find(key);
+bool StateRepresentation::scanCell(const Cell& c, const float* continuous, std::vector<ActiveFeature>& out) const {
     const float cutoff2 = kCutoffWidths * kCutoffWidths * sigma_ * sigma_;
     const float sigma2 = sigma_ * sigma_;
     const float inv2Sigma2 = 1.0f / (2.0f * sigma2);
     bool nearOne = false;
-
-    if (arrayIt != arrays_.end()) {
-        // Distinct neighbouring cell coordinates per dimension (wrapping on circular sensors).
-        cellCoords(continuous, coords_.data());
-        for (std::uint32_t d = 0; d < numContinuous_; ++d) {
-            std::uint8_t n = 0;
-            for (int off = -1; off <= 1; ++off) {
-                std::int32_t c = coords_[d] + off;
-                if (circular_[d]) c = (c % cellsPerDim_ + cellsPerDim_) % cellsPerDim_;
-                else if (c < 0 || c >= cellsPerDim_) continue;
-                bool seen = false;
-                for (std::uint8_t k = 0; k < n; ++k) seen |= candidates_[d * 3 + k] == c;
-                if (!seen) candidates_[d * 3 + n++] = c;
+    std::size_t n = out.size();
+    out.resize(n + c.features.size());  // capacity is reused once warmed up
+    ActiveFeature* slots = out.data();
+    const float* block = c.centres.data();
+    for (std::size_t first = 0; first < c.features.size(); first += kLanes) {
+        // kLanes RBFs at once: Eigen maps the fixed-size arrays onto SIMD registers.
+        Lanes d2 = Lanes::Zero();
+        for (std::uint32_t d = 0; d < numContinuous_; ++d, block += kLanes) {
+            Lanes diff = continuous[d] - Eigen::Map<const Lanes>(block);
+            if (circular_[d]) {  // the shorter way round: -1 and 1 meet
+                diff = (diff > 1.0f).select(diff - 2.0f, (diff < -1.0f).select(diff + 2.0f, diff));
             }
-            candidateCount_[d] = n;
+            d2 += diff.square();
+        }
+        const Lanes activation = (d2 * -inv2Sigma2).exp();
+        // Branch-free: every candidate is written and kept only within the cutoff
+        // (about half are, so a branch would mispredict constantly).
+        const std::size_t lanes = std::min<std::size_t>(kLanes, c.features.size() - first);
+        for (std::size_t l = 0; l < lanes; ++l) {
+            slots[n] = ActiveFeature{c.features[first + l], activation[l]};
+            n += d2[l] < cutoff2;
+            nearOne |= d2[l] < sigma2;
+        }
+    }
+    out.resize(n);
+    return nearOne;
+}
+
+bool StateRepresentation::find(const std::int32_t* discrete, const float* continuous,
+                               std::vector<ActiveFeature>& out) const {
+    out.clear();
+    auto arrayIt = arrays_.find(discreteKey(discrete));
+    if (arrayIt == arrays_.end()) return false;
+    const auto& cells = arrayIt->second.cells;
+
+    // Distinct neighbouring cell coordinates per dimension (wrapping on circular sensors).
+    cellCoords(continuous, coords_.data());
+    std::size_t neighbours = 1;
+    for (std::uint32_t d = 0; d < numContinuous_; ++d) {
+        std::uint8_t n = 0;
+        for (int off = -1; off <= 1; ++off) {
+            std::int32_t c = coords_[d] + off;
+            if (circular_[d]) c = (c % cellsPerDim_ + cellsPerDim_) % cellsPerDim_;
+            else if (c < 0 || c >= cellsPerDim_) continue;
+            bool seen = false;
+            for (std::uint8_t k = 0; k < n; ++k) seen |= candidates_[d * 3 + k] == c;
+            if (!seen) candidates_[d * 3 + n++] = c;
+        }
+        candidateCount_[d] = n;
+        offsets_[d] = 0;
+        neighbours *= n;
+    }
+
+    bool nearOne = false;
+    if (cells.size() <= neighbours) {
+        // A coarse grid (low resolution, many sensors): the array has no more cells than the
+        // neighbourhood, so reading them all costs no more and needs no hashing.
+        for (const auto& entry : cells) nearOne |= scanCell(entry.second, continuous, out);
+        return nearOne;
+    }
+    visited_.clear();
+    while (true) {
+        for (std::uint32_t d = 0; d < numContinuous_; ++d) neighbour_[d] = candidates_[d * 3 + offsets_[d]];
+        const std::uint64_t hash = cellHash(neighbour_.data());
+        auto cell = cells.find(hash);
+        // Two neighbour cells whose hashes collide share one list: visit it once.
+        if (cell != cells.end() && std::find(visited_.begin(), visited_.end(), hash) == visited_.end()) {
+            visited_.push_back(hash);
+            nearOne |= scanCell(cell->second, continuous, out);
+        }
+        std::uint32_t d = 0;
+        for (; d < numContinuous_; ++d) {  // odometer over the neighbour cells
+            if (++offsets_[d] < candidateCount_[d]) break;
             offsets_[d] = 0;
         }
-        const auto& cells = arrayIt->second.cells;
-        visited_.clear();
-        while (true) {
-            for (std::uint32_t d = 0; d < numContinuous_; ++d) neighbour_[d] = candidates_[d * 3 + offsets_[d]];
-            const std::uint64_t hash = cellHash(neighbour_.data());
-            auto cell = cells.find(hash);
-            // Two neighbour cells whose hashes collide share one list: visit it once.
-            if (cell != cells.end() &&
-                std::find(visited_.begin(), visited_.end(), hash) == visited_.end()) {
-                visited_.push_back(hash);
-                const Cell& c = cell->second;
-                std::size_t n = out.size();
-                out.resize(n + c.features.size());  // capacity is reused once warmed up
-                ActiveFeature* slots = out.data();
-                const float* block = c.centres.data();
-                for (std::size_t first = 0; first < c.features.size(); first += kLanes) {
-                    // kLanes RBFs at once: Eigen maps the fixed-size arrays onto SIMD registers.
-                    Lanes d2 = Lanes::Zero();
-                    for (std::uint32_t d = 0; d < numContinuous_; ++d, block += kLanes) {
-                        Lanes diff = continuous[d] - Eigen::Map<const Lanes>(block);
-                        if (circular_[d]) {  // the shorter way round: -1 and 1 meet
-                            diff = (diff > 1.0f).select(diff - 2.0f, (diff < -1.0f).select(diff + 2.0f, diff));
-                        }
-                        d2 += diff.square();
-                    }
-                    const Lanes activation = (d2 * -inv2Sigma2).exp();
-                    // Branch-free: every candidate is written and kept only within the cutoff
-                    // (about half are, so a branch would mispredict constantly).
-                    const std::size_t lanes = std::min<std::size_t>(kLanes, c.features.size() - first);
-                    for (std::size_t l = 0; l < lanes; ++l) {
-                        slots[n] = ActiveFeature{c.features[first + l], activation[l]};
-                        n += d2[l] < cutoff2;
-                        nearOne |= d2[l] < sigma2;
-                    }
-                }
-                out.resize(n);
-            }
-            std::uint32_t d = 0;
-            for (; d < numContinuous_; ++d) {  // odometer over the neighbour cells
-                if (++offsets_[d] < candidateCount_[d]) break;
-                offsets_[d] = 0;
-            }
-            if (d == numContinuous_) break;
-        }
+        if (d == numContinuous_) break;
     }
     return nearOne;
 }

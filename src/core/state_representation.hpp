@@ -62,6 +62,8 @@ private:
         std::unordered_map<std::uint64_t, Cell> cells;
     };
 
+    // Appends the RBFs of one cell within the cutoff; returns whether one lies within a width.
+    bool scanCell(const Cell& c, const float* continuous, std::vector<ActiveFeature>& out) const;
     std::uint64_t discreteKey(const std::int32_t* discrete) const;
     void cellCoords(const float* point, std::int32_t* coords) const;
     std::uint64_t cellHash(const std::int32_t* coords) const;

@@ -75,15 +75,22 @@ void TdLearner::grow(std::uint32_t featureCount) {
 
 void TdLearner::mark(const std::vector<ActiveFeature>& phi, std::uint32_t action, std::uint32_t featureCount) {
     grow(featureCount);
+    // Below the threshold a trace would be dropped at the next decay anyway, and in a 4-sigma
+    // neighbourhood most features are below it: a sequential, branch-free filter first, so that
+    // only the features that mark anything touch the (randomly placed) trace rows.
+    strong_.resize(phi.size());
+    std::size_t n = 0;
     for (const auto& f : phi) {
-        // Below the threshold a trace would be dropped at the next decay anyway: such features
-        // mark nothing. Branch-free, since about half of a 4-sigma neighbourhood is below it.
-        const float a = f.activation >= threshold_ ? f.activation : 0.0f;
+        strong_[n] = f;
+        n += f.activation >= threshold_;
+    }
+    for (std::size_t i = 0; i < n; ++i) {
+        const ActiveFeature& f = strong_[i];
         float* e = trace(f.index);
         live_[liveCount_] = f.index;
-        liveCount_ += (e[0] == 0.0f) & (a > 0.0f);  // newly live (a live value trace is > 0)
-        e[0] = std::max(e[0], a);
-        e[1 + action] = std::max(e[1 + action], a);
+        liveCount_ += e[0] == 0.0f;  // newly live (a live value trace is > 0)
+        e[0] = std::max(e[0], f.activation);
+        e[1 + action] = std::max(e[1 + action], f.activation);
     }
 }
 

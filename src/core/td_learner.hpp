@@ -68,6 +68,7 @@ private:
     std::vector<std::uint32_t> live_;   // live features in its first liveCount_ entries
     std::uint32_t liveCount_ = 0;
     std::vector<float> step_;           // eta * delta per trace component (scratch)
+    std::vector<ActiveFeature> strong_; // features active enough to mark a trace (scratch)
 };
 
 }  // namespace verve::core

@@ -42,10 +42,11 @@ TEST(PlanningLearning, ModelErrorFallsTowardZero) {
     EXPECT_LT(late, 0.01f);  // a deterministic maze is learned exactly (rate 1)
 }
 
-// The original's continuous planning never reached the goal. Ours does on these seeds (38 steps over
-// trials 41-50); over 10 runs 90% of late trials reach it (docs/planning.md), still not faster than RL
-// alone. Passing since the value bound of docs/algorithm.md.
-TEST(PlanningLearning, PlanningWorksWithContinuousSensors) {
+// Known gap (the KnownGap convention: tests/learning/hot_plate_learning_test.cpp; docs/planning.md):
+// the original's continuous planning never reached the goal; ours does in about 90% of late trials
+// over 10 runs (1035 steps over trials 41-50), so "every late trial" is not met, and it is not faster
+// than RL alone. Kept, not weakened.
+TEST(KnownGapPlanningLearning, PlanningWorksWithContinuousSensors) {
     // The original's continuous planning runs all hit the 10,000-step cap.
     const LearningCurve c = maze2("maze2-continuous", 4, [](AgentDescriptor& d) {
         d.planning = true;
