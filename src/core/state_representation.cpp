@@ -33,10 +33,7 @@ StateRepresentation::StateRepresentation(const AgentDescriptor& desc)
       cellSize_(2.0f / static_cast<float>(cellsPerDim_)),
       keyCount_(1),
       activationSum_(1.0f) {
-    for (const auto& s : desc.continuousSensors) {
-        circular_.push_back(s.circular);
-        wrap_.push_back(s.circular ? 2.0f : 0.0f);
-    }
+    for (const auto& s : desc.continuousSensors) circular_.push_back(s.circular);
     for (auto c : discreteCounts_) keyCount_ *= c;
     activationSum_ = std::pow(2.5f, static_cast<float>(numContinuous_));
     coords_.resize(numContinuous_);
@@ -67,18 +64,6 @@ std::uint64_t StateRepresentation::cellHash(const std::int32_t* coords) const {
     std::uint64_t h = 0x2545f4914f6cdd1dULL;
     for (std::uint32_t d = 0; d < numContinuous_; ++d) h = mix(h, static_cast<std::uint32_t>(coords[d]));
     return h;
-}
-
-float StateRepresentation::squaredDistance(const float* a, const float* b) const {
-    float sum = 0.0f;
-    for (std::uint32_t d = 0; d < numContinuous_; ++d) {
-        float diff = a[d] - b[d];
-        // Circular sensors take the shorter way round (-1 and 1 are the same point); branch-free,
-        // since this runs for every candidate RBF of every update.
-        diff -= wrap_[d] * (static_cast<float>(diff > 1.0f) - static_cast<float>(diff < -1.0f));
-        sum += diff * diff;
-    }
-    return sum;
 }
 
 std::uint32_t StateRepresentation::addFeature(std::uint64_t key, const float* centre) {

@@ -67,12 +67,10 @@ private:
     std::uint64_t discreteKey(const std::int32_t* discrete) const;
     void cellCoords(const float* point, std::int32_t* coords) const;
     std::uint64_t cellHash(const std::int32_t* coords) const;
-    float squaredDistance(const float* a, const float* b) const;
     void allocateFullLattice();
 
     std::vector<std::uint32_t> discreteCounts_;
     std::vector<bool> circular_;
-    std::vector<float> wrap_;  // 2 for circular sensors, 0 otherwise
     std::uint32_t numContinuous_;
     std::uint32_t resolution_;
     float sigma_;
