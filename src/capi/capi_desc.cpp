@@ -28,31 +28,40 @@ bool isKnownDescSize(std::uint32_t size) noexcept {
     return size == VERVE_AGENT_DESC_SIZE_V1 || size == VERVE_AGENT_DESC_SIZE_V2;
 }
 
-verve_agent_desc defaultDesc() noexcept {
+// The full current struct for a descriptor: the one place the two layouts meet field by field.
+static verve_agent_desc fullDesc(const AgentDescriptor& in) noexcept {
     verve_agent_desc d;
     std::memset(&d, 0, sizeof d);  // also the padding, so the bytes are deterministic
-    const AgentDescriptor defaults;  // one source of truth for defaults: the C++ descriptor
     d.struct_size = sizeof d;
-    d.resolution = defaults.resolution;
-    d.num_actions = defaults.numActions;
-    d.rbf_allocation = static_cast<std::uint32_t>(defaults.allocation);
-    d.tau_value = defaults.tauValue;
-    d.tau_discount = defaults.tauDiscount;
-    d.tau_eligibility = defaults.tauEligibility;
-    d.policy_multiplier = defaults.policyMultiplier;
-    d.trace_threshold = defaults.traceThreshold;
-    d.seed = defaults.seed;
-    d.planning = defaults.planning ? 1u : 0u;
-    d.tau_model = defaults.tauModel;
-    d.max_planning_steps = defaults.maxPlanningSteps;
-    d.planning_uncertainty_threshold = defaults.planningUncertaintyThreshold;
-    d.curiosity = static_cast<std::uint32_t>(defaults.curiosity);
-    d.curiosity_factor = defaults.curiosityFactor;
-    d.planning_accumulates_uncertainty = defaults.planningAccumulatesUncertainty ? 1u : 0u;
-    d.learn_from_real_steps = defaults.learnFromRealSteps ? 1u : 0u;
-    d.discrete_prediction = static_cast<std::uint32_t>(defaults.discretePrediction);
+    d.num_discrete_sensors = static_cast<std::uint32_t>(in.discreteSensors.size());
+    for (std::size_t i = 0; i < in.discreteSensors.size(); ++i) d.discrete_sensor_values[i] = in.discreteSensors[i];
+    d.num_continuous_sensors = static_cast<std::uint32_t>(in.continuousSensors.size());
+    for (std::size_t i = 0; i < in.continuousSensors.size(); ++i) {
+        d.continuous_sensor_circular[i] = in.continuousSensors[i].circular ? 1 : 0;
+    }
+    d.resolution = in.resolution;
+    d.num_actions = in.numActions;
+    d.rbf_allocation = static_cast<std::uint32_t>(in.allocation);
+    d.tau_value = in.tauValue;
+    d.tau_discount = in.tauDiscount;
+    d.tau_eligibility = in.tauEligibility;
+    d.policy_multiplier = in.policyMultiplier;
+    d.trace_threshold = in.traceThreshold;
+    d.seed = in.seed;
+    d.planning = in.planning ? 1u : 0u;
+    d.tau_model = in.tauModel;
+    d.max_planning_steps = in.maxPlanningSteps;
+    d.planning_uncertainty_threshold = in.planningUncertaintyThreshold;
+    d.curiosity = static_cast<std::uint32_t>(in.curiosity);
+    d.curiosity_factor = in.curiosityFactor;
+    d.planning_accumulates_uncertainty = in.planningAccumulatesUncertainty ? 1u : 0u;
+    d.learn_from_real_steps = in.learnFromRealSteps ? 1u : 0u;
+    d.discrete_prediction = static_cast<std::uint32_t>(in.discretePrediction);
     return d;
 }
+
+// One source of truth for defaults: the C++ descriptor's.
+verve_agent_desc defaultDesc() noexcept { return fullDesc(AgentDescriptor{}); }
 
 void initDesc(verve_agent_desc& out, std::uint32_t size) {
     requireKnownSize(size);
@@ -112,33 +121,9 @@ AgentDescriptor toDescriptor(const verve_agent_desc& in) {
 void writeDesc(const AgentDescriptor& in, verve_agent_desc& out) {
     const std::uint32_t size = out.struct_size;
     requireKnownSize(size);
-    verve_agent_desc d = defaultDesc();
+    verve_agent_desc d = fullDesc(in);
     d.struct_size = size;
-    d.num_discrete_sensors = static_cast<std::uint32_t>(in.discreteSensors.size());
-    for (std::size_t i = 0; i < in.discreteSensors.size(); ++i) d.discrete_sensor_values[i] = in.discreteSensors[i];
-    d.num_continuous_sensors = static_cast<std::uint32_t>(in.continuousSensors.size());
-    for (std::size_t i = 0; i < in.continuousSensors.size(); ++i) {
-        d.continuous_sensor_circular[i] = in.continuousSensors[i].circular ? 1 : 0;
-    }
-    d.resolution = in.resolution;
-    d.num_actions = in.numActions;
-    d.rbf_allocation = static_cast<std::uint32_t>(in.allocation);
-    d.tau_value = in.tauValue;
-    d.tau_discount = in.tauDiscount;
-    d.tau_eligibility = in.tauEligibility;
-    d.policy_multiplier = in.policyMultiplier;
-    d.trace_threshold = in.traceThreshold;
-    d.seed = in.seed;
-    d.planning = in.planning ? 1u : 0u;
-    d.tau_model = in.tauModel;
-    d.max_planning_steps = in.maxPlanningSteps;
-    d.planning_uncertainty_threshold = in.planningUncertaintyThreshold;
-    d.curiosity = static_cast<std::uint32_t>(in.curiosity);
-    d.curiosity_factor = in.curiosityFactor;
-    d.planning_accumulates_uncertainty = in.planningAccumulatesUncertainty ? 1u : 0u;
-    d.learn_from_real_steps = in.learnFromRealSteps ? 1u : 0u;
-    d.discrete_prediction = static_cast<std::uint32_t>(in.discretePrediction);
-    std::memcpy(&out, &d, size);
+    std::memcpy(&out, &d, size);  // an older, smaller struct gets only its own bytes
 }
 
 }  // namespace verve::capi

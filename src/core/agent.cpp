@@ -108,8 +108,8 @@ std::uint32_t Agent::update(float reward, ObservationView obs, float dt) {
     }
 
     const bool plans = s.learning && s.desc.planning;
+    const StepConstants k = s.constantsFor(dt);
     if (s.learning && s.hasPrevious) {
-        const StepConstants k = s.constantsFor(dt);
         if (plans) s.learnModel(r, obs.discrete, dt);
         if (s.learnsFromRealSteps()) {
             // V(s) is the value the previous update left in stats.value: no weight changes
@@ -121,7 +121,7 @@ std::uint32_t Agent::update(float reward, ObservationView obs, float dt) {
         }
     }
     // Plan from the state just reached, before acting, so the action already uses what it taught.
-    if (plans) s.plan(s.constantsFor(dt));
+    if (plans) s.plan(k);
 
     const std::uint32_t action = s.td.chooseAction(s.weights, s.current, s.rng, s.activations, s.stats.value);
     if (s.learning && s.learnsFromRealSteps()) s.td.mark(s.current, action, s.rep.featureCount());
