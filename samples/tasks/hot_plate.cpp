@@ -20,6 +20,7 @@ HotPlate::HotPlate(const HotPlateConfig& config)
         throw std::invalid_argument("HotPlate: dimensions must be 1 or 2");
     }
     if (config.size < 3) throw std::invalid_argument("HotPlate: size must be >= 3");
+    if (config.maxSteps == 0) throw std::invalid_argument("HotPlate: maxSteps must be >= 1");
 
     // Thesis figures 18, 20, 22, 26: policy multiplier 10; continuous resolution 10 (plain) or
     // 25 (signaled); time step and tau_value 0.1 s; the rest are the library defaults.

@@ -1,9 +1,10 @@
-// Hot plates (thesis figs. 18, 20, 22, 26) against the original library's final numbers (mean
-// steps to a safe zone over the last 10% of trials). Starts are uniform over every cell (see
-// hot_plate.hpp), the rule under which the original's numbers are possible; its expected optimum
-// is then 4.5 (1D), 2.85 (2D) and 9.5 (signaled) steps. We compare the excess over the optimum of
-// the very same trials, so luck in the sampled starts does not decide a test:
-//   allowed excess = original's final steps - expected optimum under that start rule.
+// Hot plates (thesis figs. 18, 20, 22, 26) against the original library. Its own test programs
+// (2008 source) start a trial on a uniformly random cell and cut it off after 200 steps, as ours do
+// (hot_plate.hpp). A final number depends on how far the sampled starts happened to be from safety,
+// so we compare the *excess* steps over the optimum of the very same trials, with the original's
+// excess measured the same way: by running its own test code over many seeds (docs/experiments.md,
+// "Measuring the original"). The single numbers of original-verve.md (4.8, 4.7, 9.6, ...) are one
+// draw each; the original's own raw finals range e.g. 4.60-5.09 (1D) over seeds.
 #include <gtest/gtest.h>
 
 #include "learning_window.hpp"
@@ -17,17 +18,16 @@ struct Bar {
     const char* task;
     std::uint32_t runs;
     std::uint32_t trials;  // the original's trial count
-    double originalFinal;  // original library, last 10% of trials
-    double expectedOptimum;
+    double originalExcess;  // original library: mean excess over the last 10% of trials, over seeds
 };
 
 void expectAtLeastTheOriginal(const Bar& bar) {
     const LearningCurve c = learn(bar.task, bar.runs, bar.trials);
     const Window w = lastTenth(c);
     print(std::string(bar.task) + " last 10%", w);
-    EXPECT_LE(w.excess(), bar.originalFinal - bar.expectedOptimum)
-        << bar.task << ": " << w.steps << " steps where " << w.optimal << " were possible; the original took "
-        << bar.originalFinal << " where about " << bar.expectedOptimum << " were possible";
+    EXPECT_LE(w.excess(), bar.originalExcess)
+        << bar.task << ": " << w.steps << " steps where " << w.optimal << " were possible; the original takes "
+        << bar.originalExcess << " steps more than possible";
 }
 
 // Thesis: "The value functions at the end of trial 30 are nearly optimal." Steps over trials
@@ -44,6 +44,7 @@ void expectNearOptimalByTrial30(const char* task) {
 // Known gaps: suites named KnownGap* hold bars we do not meet yet. The thresholds are the original's
 // numbers, unchanged; scripts/test.sh runs these tests in every CI run and prints their results, but
 // does not fail on them. docs/experiments.md gives the measured values and their statistics.
+// Original excess: mean (standard error) over seeds of its own test program, 200-step cap.
 
 TEST(HotPlateLearning, OneDimensionalDiscreteNearOptimalByTrial30) { expectNearOptimalByTrial30("hot-plate-1d"); }
 
@@ -51,41 +52,45 @@ TEST(HotPlateLearning, OneDimensionalContinuousNearOptimalByTrial30) {
     expectNearOptimalByTrial30("hot-plate-1d-continuous");
 }
 
-// Measured excess 0.349 against 0.30: within the original's own sampling error (about 0.05).
-TEST(KnownGapHotPlateLearning, OneDimensionalDiscreteMatchesTheOriginal) {
-    expectAtLeastTheOriginal({"hot-plate-1d", 2000, 31, 4.8, 4.5});
+// Original: 0.367 (0.011) over 40 seeds of 300 runs.
+TEST(HotPlateLearning, OneDimensionalDiscreteMatchesTheOriginal) {
+    expectAtLeastTheOriginal({"hot-plate-1d", 2000, 31, 0.367});
 }
 
+// Original: 0.110 (0.008) over 30 seeds.
 TEST(HotPlateLearning, OneDimensionalContinuousMatchesTheOriginal) {
-    expectAtLeastTheOriginal({"hot-plate-1d-continuous", 2000, 31, 4.7, 4.5});
+    expectAtLeastTheOriginal({"hot-plate-1d-continuous", 2000, 31, 0.110});
 }
 
-// Measured excess 1.966 against 1.95: within the original's own sampling error (about 0.04).
-TEST(KnownGapHotPlateLearning, TwoDimensionalDiscreteMatchesTheOriginal) {
-    expectAtLeastTheOriginal({"hot-plate-2d", 600, 301, 4.8, 2.85});
+// Original: 2.025 (0.014) over 10 seeds.
+TEST(HotPlateLearning, TwoDimensionalDiscreteMatchesTheOriginal) {
+    expectAtLeastTheOriginal({"hot-plate-2d", 600, 301, 2.025});
 }
 
-// Measured excess 0.168 against 0.15: within the original's own sampling error (about 0.04).
-TEST(KnownGapHotPlateLearning, TwoDimensionalContinuousMatchesTheOriginal) {
-    expectAtLeastTheOriginal({"hot-plate-2d-continuous", 600, 301, 3.0, 2.85});
+// Original: 0.199 (0.002) over 10 seeds.
+TEST(HotPlateLearning, TwoDimensionalContinuousMatchesTheOriginal) {
+    expectAtLeastTheOriginal({"hot-plate-2d-continuous", 600, 301, 0.199});
 }
 
-// Measured excess 0.187 against 0.10 (the original's 9.6 is rounded: 0.05-0.15): probably a real gap.
+// Original: 0.190 (0.004) over 40 seeds of 500 runs; ours 0.205 (0.003) over 80. A real gap of
+// 0.015 steps: the original chooses its action before the step's TD update, we after it. Its order
+// gives 0.189 here but is worse on every 2D hot plate (docs/experiments.md, "Known gaps").
 TEST(KnownGapSignaledHotPlateLearning, OneDimensionalDiscreteMatchesTheOriginal) {
-    expectAtLeastTheOriginal({"signaled-hot-plate-1d", 2000, 81, 9.6, 9.5});
+    expectAtLeastTheOriginal({"signaled-hot-plate-1d", 2000, 81, 0.190});
 }
 
-// The original has no continuous 1D number; the thesis found continuous sensors "as well or
-// better" than discrete ones on all four hot plates, so the discrete bar applies.
-// Measured excess 2.67 against 0.10: rare trials still stall at the wrong wall (docs/algorithm.md).
-TEST(KnownGapSignaledHotPlateLearning, OneDimensionalContinuousMatchesTheDiscreteOriginal) {
-    expectAtLeastTheOriginal({"signaled-hot-plate-1d-continuous", 1000, 81, 9.6, 9.5});
+// Original: 2.19 (0.09) over 10 seeds; 1.1% of its late trials stall at the wrong wall until the
+// cap, 0.4% of ours (docs/experiments.md, "Known gaps").
+TEST(SignaledHotPlateLearning, OneDimensionalContinuousMatchesTheOriginal) {
+    expectAtLeastTheOriginal({"signaled-hot-plate-1d-continuous", 1000, 81, 2.19});
 }
 
+// Original: 3.748 (0.009) over 4 seeds.
 TEST(SignaledHotPlateLearning, TwoDimensionalDiscreteMatchesTheOriginal) {
-    expectAtLeastTheOriginal({"signaled-hot-plate-2d", 300, 1601, 13.2, 9.5});
+    expectAtLeastTheOriginal({"signaled-hot-plate-2d", 300, 1601, 3.748});
 }
 
+// Original: 1.133 (0.025) over 3 seeds.
 TEST(SignaledHotPlateLearning, TwoDimensionalContinuousMatchesTheOriginal) {
-    expectAtLeastTheOriginal({"signaled-hot-plate-2d-continuous", 100, 1601, 10.7, 9.5});
+    expectAtLeastTheOriginal({"signaled-hot-plate-2d-continuous", 100, 1601, 1.133});
 }

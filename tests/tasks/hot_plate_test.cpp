@@ -129,8 +129,17 @@ TEST(HotPlate, SameSeedSameTrial) {
     }
 }
 
+// The original's hot-plate tests cut a trial off after 200 steps; the numbers we compare with
+// were measured that way.
+TEST(HotPlate, TrialsAreCutOffAfter200StepsLikeTheOriginal) {
+    EXPECT_EQ(HotPlate({1, true, Sensors::Continuous}).maxStepsPerTrial(), 200u);
+    EXPECT_EQ(HotPlate({2, false, Sensors::Discrete}).maxStepsPerTrial(), 200u);
+    EXPECT_EQ(HotPlate({1, false, Sensors::Discrete, 20, 50}).maxStepsPerTrial(), 50u);
+}
+
 TEST(HotPlate, BadInputIsRejectedAndChangesNothing) {
     EXPECT_THROW(HotPlate({3, false, Sensors::Discrete}), std::invalid_argument);
+    EXPECT_THROW(HotPlate({1, false, Sensors::Discrete, 20, 0}), std::invalid_argument);
     HotPlate plate({1, false, Sensors::Discrete});
     plate.place({5, 0}, 0);
     EXPECT_THROW(plate.act(3), std::invalid_argument);
