@@ -41,9 +41,8 @@ void expectNearOptimalByTrial30(const char* task) {
 
 }  // namespace
 
-// Known gaps: suites named KnownGap* hold bars we do not meet yet. The thresholds are the original's
-// numbers, unchanged; scripts/test.sh runs these tests in every CI run and prints their results, but
-// does not fail on them. docs/experiments.md gives the measured values and their statistics.
+// Known gaps: suites named KnownGap* hold bars we do not meet yet. scripts/test.sh runs them in
+// every CI run and prints their results, but does not fail on them.
 // Original excess: mean (standard error) over seeds of its own test program, 200-step cap.
 
 TEST(HotPlateLearning, OneDimensionalDiscreteNearOptimalByTrial30) { expectNearOptimalByTrial30("hot-plate-1d"); }
