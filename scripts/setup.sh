@@ -1,6 +1,9 @@
 #!/usr/bin/env bash
 # Installs the Debian packages Verve builds and tests with (only the missing ones: fast when all
 # are present). Needs root or sudo on a fresh machine.
+#   ./scripts/setup.sh         what the build and the demo need
+#   ./scripts/setup.sh --test  also what every test suite needs (cross toolchain, Wine, engines, Mono,
+#                              clang for fuzzing)
 set -euo pipefail
 
 packages=(
@@ -10,6 +13,12 @@ packages=(
   liblua5.4-dev lua5.4 luajit libluajit-5.1-dev
   gnuplot-nox
 )
+# Only for ./scripts/test.sh: each group names what it is for.
+test_packages=(
+  dpkg-dev                                     # apt-get source: third-party sources (scripts/fetch_source.sh)
+)
+
+if [ "${1:-}" = "--test" ]; then packages+=("${test_packages[@]}"); fi
 
 missing=()
 for p in "${packages[@]}"; do
@@ -21,6 +30,6 @@ if [ ${#missing[@]} -gt 0 ]; then
   sudo_cmd=()
   [ "$(id -u)" -eq 0 ] || sudo_cmd=(sudo)
   export DEBIAN_FRONTEND=noninteractive
-  "${sudo_cmd[@]}" apt-get update -qq
-  "${sudo_cmd[@]}" apt-get install -y -qq --no-install-recommends "${missing[@]}" >/dev/null
+  "${sudo_cmd[@]}" apt-get -o DPkg::Lock::Timeout=600 update -qq
+  "${sudo_cmd[@]}" apt-get -o DPkg::Lock::Timeout=600 install -y -qq --no-install-recommends "${missing[@]}" >/dev/null
 fi
