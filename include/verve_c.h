@@ -76,6 +76,11 @@ typedef enum verve_discrete_prediction {
     VERVE_DISCRETE_PREDICTION_ORDINAL = 1      /* the original's single rounded scalar */
 } verve_discrete_prediction;
 
+typedef enum verve_action_selection {
+    VERVE_ACTION_SAMPLE = 0, /* draw each action with its probability: explores, learns (default) */
+    VERVE_ACTION_GREEDY = 1  /* always the most probable action: deterministic play, a shipped NPC */
+} verve_action_selection;
+
 typedef enum verve_sensor_kind {
     VERVE_SENSOR_DISCRETE = 0,
     VERVE_SENSOR_CONTINUOUS = 1
@@ -113,13 +118,19 @@ typedef struct verve_agent_desc {
     uint32_t planning_accumulates_uncertainty; /* 1 (default): a plan stops on its summed uncertainty */
     uint32_t learn_from_real_steps;        /* 1 (default, Dyna): real steps train too, not only plans */
     uint32_t discrete_prediction;          /* verve_discrete_prediction (default CATEGORICAL) */
+    uint32_t reserved_v2;                  /* ignored: the V2 struct's tail padding, named so V3 fields start after it */
+
+    /* V3 */
+    float policy_weight_bound;             /* > 0: actor weights stay within +-bound, so habits can be
+                                              unlearned when the world changes; 0: unbounded (default) */
 } verve_agent_desc;
 
 /* The sizes of verve_agent_desc a library accepts in struct_size: each release's full struct.
- * V1 ended after `seed` (no planning fields); V2 is the current struct. Fields beyond a smaller
- * struct_size take their defaults. Any other size is refused. */
+ * V1 ended after `seed` (no planning fields); V2 after discrete_prediction; V3 is the current
+ * struct. Fields beyond a smaller struct_size take their defaults. Any other size is refused. */
 #define VERVE_AGENT_DESC_SIZE_V1 ((uint32_t)offsetof(verve_agent_desc, planning))
-#define VERVE_AGENT_DESC_SIZE_V2 ((uint32_t)sizeof(verve_agent_desc))
+#define VERVE_AGENT_DESC_SIZE_V2 ((uint32_t)offsetof(verve_agent_desc, policy_weight_bound))
+#define VERVE_AGENT_DESC_SIZE_V3 ((uint32_t)sizeof(verve_agent_desc))
 
 typedef struct verve_agent_stats {
     uint32_t struct_size;           /* set by the caller to sizeof(verve_agent_stats) */
@@ -160,15 +171,34 @@ VERVE_API void VERVE_CALL verve_agent_destroy(verve_agent* agent); /* NULL is ig
 VERVE_API verve_result VERVE_CALL verve_agent_update(verve_agent* agent, float reward,
     const int32_t* discrete, uint32_t n_discrete, const float* continuous, uint32_t n_continuous,
     float dt, uint32_t* out_action);
-/* Ends a trial with a terminal reward (nothing is bootstrapped past it). */
+/* verve_agent_update choosing only among the actions the mask allows this step: action_mask holds
+ * n_actions flags (the agent's num_actions), 1 allowed, 0 not, at least one 1. A masked action is
+ * never chosen and gets no credit. */
+VERVE_API verve_result VERVE_CALL verve_agent_update_masked(verve_agent* agent, float reward,
+    const int32_t* discrete, uint32_t n_discrete, const float* continuous, uint32_t n_continuous,
+    float dt, const uint8_t* action_mask, uint32_t n_actions, uint32_t* out_action);
+/* Ends a trial that really ended (goal reached, NPC died): final_reward is learned as the last
+ * reward there is, nothing is expected after it. */
 VERVE_API verve_result VERVE_CALL verve_agent_end_episode(verve_agent* agent, float final_reward);
+/* Ends a trial that was cut off (a time limit, a level reset) where the world would have gone on:
+ * reward (what the last action earned) is learned, and the last state's value stands in for what
+ * would have followed. Use it instead of verve_agent_end_episode when the end was not the task's. */
+VERVE_API verve_result VERVE_CALL verve_agent_truncate_episode(verve_agent* agent, float reward);
 VERVE_API verve_result VERVE_CALL verve_agent_reset_short_term_memory(verve_agent* agent);
 VERVE_API verve_result VERVE_CALL verve_agent_set_learning(verve_agent* agent, int enabled);
 VERVE_API verve_result VERVE_CALL verve_agent_get_learning(const verve_agent* agent, int* out_enabled);
 /* out->struct_size must be set (verve_agent_desc_init does it); only that many bytes are written. */
 VERVE_API verve_result VERVE_CALL verve_agent_get_desc(const verve_agent* agent, verve_agent_desc* out);
 
+/* How verve_agent_update picks its action: a verve_action_selection. Per agent, not saved. */
+VERVE_API verve_result VERVE_CALL verve_agent_set_action_selection(verve_agent* agent, uint32_t mode);
+VERVE_API verve_result VERVE_CALL verve_agent_get_action_selection(const verve_agent* agent, uint32_t* out_mode);
+
 /* ---- read-outs -------------------------------------------------------------------------- */
+/* The policy's probability of each action at the latest update (count = num_actions floats summing
+ * to 1; 0 for masked actions): what VERVE_ACTION_SAMPLE drew from. Uniform before any update. */
+VERVE_API verve_result VERVE_CALL verve_agent_get_action_probabilities(const verve_agent* agent, float* out,
+    uint32_t count);
 VERVE_API verve_result VERVE_CALL verve_agent_get_value(const verve_agent* agent, float* out_value);
 VERVE_API verve_result VERVE_CALL verve_agent_get_td_error(const verve_agent* agent, float* out_td_error);
 VERVE_API verve_result VERVE_CALL verve_agent_get_rbf_count(const verve_agent* agent, uint32_t* out_count);

@@ -25,6 +25,18 @@ struct AgentStats {
     float curiosityReward = 0.0f;       // curiosity reward summed over the latest plan
 };
 
+// How update() picks the action from the policy's probabilities.
+enum class ActionSelection : std::uint8_t {
+    Sample = 0,  // roulette: each action with its probability (learning explores; the default)
+    Greedy = 1,  // always the most probable action: deterministic play for a shipped NPC
+};
+
+// Which actions the agent may choose on one step: `count` flags (numActions), 1 allowed, 0 not.
+struct ActionMask {
+    const std::uint8_t* allowed = nullptr;
+    std::size_t count = 0;
+};
+
 enum class SensorKind : std::uint8_t { Discrete = 0, Continuous = 1 };
 
 // One axis of a value-function image: a sensor swept over its range.
@@ -49,10 +61,20 @@ public:
     // Invalid input throws Error(InvalidArgument) and leaves the agent unchanged.
     std::uint32_t update(float reward, const Observation& obs, float dt);
     std::uint32_t update(float reward, ObservationView obs, float dt);
+    // The same step, choosing only among the actions `mask` allows (at least one; each flag 0 or
+    // 1). A masked action is never chosen and so gets no credit. Imagined planning steps are not
+    // masked: the mask says what is possible now, not later.
+    std::uint32_t update(float reward, ObservationView obs, float dt, ActionMask mask);
 
     // Ends a trial: `finalReward` is terminal (no value is bootstrapped past it), then the
     // short-term memory is cleared. The next update starts a fresh trial.
     void endEpisode(float finalReward);
+
+    // Ends a trial that was cut off (a time limit), not finished: `reward` is what the last action
+    // earned, and the value of the last state seen stands in for the state it led to, so the trial
+    // is not learned as if it had ended there (Gymnasium's `truncated`). Then, as endEpisode, the
+    // short-term memory is cleared. The predictive model learns nothing from it (no next state).
+    void truncateEpisode(float reward);
 
     // Forgets the previous step and all eligibility traces; keeps everything learned.
     void resetShortTermMemory();
@@ -60,6 +82,13 @@ public:
     // Off: the policy still acts, nothing learns, no RBFs are allocated, no model or planning runs.
     void setLearning(bool enabled);
     bool learning() const;
+
+    // Per agent, not saved with it; Sample by default.
+    void setActionSelection(ActionSelection mode);
+    ActionSelection actionSelection() const;
+    // The policy's probability of each action at the latest update (numActions values, summing to
+    // 1; 0 for masked actions), what Sample mode drew from; before any update, uniform.
+    const std::vector<float>& actionProbabilities() const;
 
     const AgentDescriptor& descriptor() const;
     AgentStats stats() const;

@@ -40,6 +40,9 @@ struct AgentDescriptor {
     float tauEligibility = 0.1f;  // lambda = e^(-dt/tau)
     float policyMultiplier = 5.0f;  // eta_policy = k * eta_value
     float traceThreshold = 0.01f;   // traces below this are dropped
+    // > 0: each actor weight is kept within +-policyWeightBound, so a habit can be unlearned when
+    // the world changes (docs/algorithm.md, "A changing world"); 0: unbounded, as in the thesis.
+    float policyWeightBound = 0.0f;
     std::uint64_t seed = 1;
 
     // Predictive model, planning and curiosity (thesis chapter 2 "Efficient learning", chapter 4).

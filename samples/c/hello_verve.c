@@ -32,7 +32,11 @@ int main(void) {
             reward = -0.1f;           /* every step costs a little */
             ++steps;
         }
-        TRY(verve_agent_end_episode(agent, cell == 20 ? 1.0f : 0.0f));
+        if (cell == 20) {
+            TRY(verve_agent_end_episode(agent, 1.0f));      /* the goal: the trial really ended */
+        } else {
+            TRY(verve_agent_truncate_episode(agent, reward)); /* out of time: the line goes on */
+        }
         if (trial % 10 == 0) printf("trial %2d: %3d steps (best 10)\n", trial, steps);
     }
     TRY(verve_agent_save(agent, "hello_verve.xml"));  /* atomic: a crash keeps the old save */

@@ -75,7 +75,7 @@ function HotPlate:run_trial(agent, dt, max_steps)
     end
     reward, obs = r, self:observe()
   end
-  agent:reset_short_term_memory() -- interrupted, not terminal: nothing to bootstrap from
+  agent:truncate_episode(reward) -- cut off, not terminal: learn the last reward, bootstrap from here
   return max_steps
 end
 

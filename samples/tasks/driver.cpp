@@ -43,7 +43,14 @@ TrialResult runTrial(Agent& agent, Environment& env, std::uint64_t seed) {
         }
         reward = step.reward;
     }
-    if (!result.terminal && !continuing) agent.resetShortTermMemory();
+    // Cut off at the cap: the last reward is learned, bootstrapped from the last state's value.
+    if (!result.terminal && !continuing) {
+        if (task == nullptr || task->truncatesAtCap()) {
+            agent.truncateEpisode(reward);
+        } else {
+            agent.resetShortTermMemory();
+        }
+    }
     if (task != nullptr) result.succeeded = task->succeeded();
     return result;
 }

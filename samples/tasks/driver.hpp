@@ -21,8 +21,9 @@ struct TrialResult {
 };
 
 // One trial: the first update gets reward 0, then act/update until the environment says terminal
-// (agent.endEpisode(finalReward), no extra update) or the step cap (not terminal: the agent only
-// forgets its short-term memory, so nothing is bootstrapped across the cut).
+// (agent.endEpisode(finalReward), no extra update) or the step cap (not terminal:
+// agent.truncateEpisode(lastReward) learns the last reward without treating the cut as an end;
+// a task that keeps the original's protocol, Task::truncatesAtCap() false, only resets).
 TrialResult runTrial(Agent& agent, Environment& env, std::uint64_t seed);
 
 using TaskFactory = std::function<std::unique_ptr<Environment>(std::uint64_t runSeed)>;

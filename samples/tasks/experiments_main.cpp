@@ -56,7 +56,7 @@ int main(int argc, char** argv) {
     std::uint64_t seed = 1;
     unsigned threads = 0;
     std::string csvPath;
-    std::optional<float> policyMultiplier;
+    std::optional<float> policyMultiplier, tauValue, policyWeightBound;
     std::optional<std::uint32_t> resolution, maxPlanningSteps;
     std::optional<bool> planning;
     std::optional<verve::CuriosityMode> curiosity;
@@ -75,6 +75,10 @@ int main(int argc, char** argv) {
     run->add_option("--csv", csvPath, "Write the curve here instead of stdout");
     run->add_option("--policy-multiplier", policyMultiplier, "Override the policy learning multiplier")
         ->check(CLI::PositiveNumber);
+    run->add_option("--tau-value", tauValue, "Override the critic's time constant (seconds)")
+        ->check(CLI::NonNegativeNumber);
+    run->add_option("--policy-weight-bound", policyWeightBound, "Override the actor weight bound (0: unbounded)")
+        ->check(CLI::NonNegativeNumber);
     run->add_option("--resolution", resolution, "Override the continuous resolution")->check(CLI::PositiveNumber);
     run->add_option("--planning", planning, "Override planning (true/false)");
     run->add_option("--max-planning-steps", maxPlanningSteps, "Override the planning step cap");
@@ -105,6 +109,8 @@ int main(int argc, char** argv) {
         if (maxPlanningSteps) d.maxPlanningSteps = *maxPlanningSteps;
         if (curiosity) d.curiosity = *curiosity;
         if (allocation) d.allocation = *allocation;
+        if (tauValue) d.tauValue = *tauValue;
+        if (policyWeightBound) d.policyWeightBound = *policyWeightBound;
     };
 
     try {

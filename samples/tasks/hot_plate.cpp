@@ -10,7 +10,7 @@ namespace {
 
 constexpr Move k1DMoves[] = {Move::Left, Move::Right, Move::Stay};
 
-int signalValues(const HotPlateConfig& c) { return c.signaled ? 2 * c.dimensions : 1; }
+int signalValues(const HotPlateConfig& c) { return c.signaled ? 2 * c.dimensions : c.swapTrial > 0 ? 2 : 1; }
 
 }  // namespace
 
@@ -21,6 +21,9 @@ HotPlate::HotPlate(const HotPlateConfig& config)
     }
     if (config.size < 3) throw std::invalid_argument("HotPlate: size must be >= 3");
     if (config.maxSteps == 0) throw std::invalid_argument("HotPlate: maxSteps must be >= 1");
+    if (config.swapTrial > 0 && (config.dimensions != 1 || config.signaled)) {
+        throw std::invalid_argument("HotPlate: only an unsignaled 1D plate can swap its safe end");
+    }
 
     // Thesis figures 18, 20, 22, 26: policy multiplier 10; continuous resolution 10 (plain) or
     // 25 (signaled); time step and tau_value 0.1 s; the rest are the library defaults.
@@ -33,7 +36,7 @@ HotPlate::HotPlate(const HotPlateConfig& config)
 }
 
 std::string HotPlate::name() const {
-    std::string n = config_.signaled ? "signaled-hot-plate-" : "hot-plate-";
+    std::string n = config_.signaled ? "signaled-hot-plate-" : config_.swapTrial > 0 ? "swapping-hot-plate-" : "hot-plate-";
     n += config_.dimensions == 1 ? "1d" : "2d";
     if (config_.sensors == Sensors::Continuous) n += "-continuous";
     return n;
@@ -41,7 +44,7 @@ std::string HotPlate::name() const {
 
 bool HotPlate::isSafe(Cell c) const {
     const int last = config_.size - 1;
-    if (!config_.signaled) {
+    if (!oneSafeEdge()) {
         return c.x == 0 || c.x == last || (config_.dimensions == 2 && (c.y == 0 || c.y == last));
     }
     switch (signal_) {
@@ -55,7 +58,7 @@ bool HotPlate::isSafe(Cell c) const {
 std::uint32_t HotPlate::distanceToSafety(Cell c) const {
     const int last = config_.size - 1;
     int d = 0;
-    if (!config_.signaled) {
+    if (!oneSafeEdge()) {
         d = std::min(c.x, last - c.x);
         if (config_.dimensions == 2) d = std::min({d, c.y, last - c.y});
     } else {
@@ -78,7 +81,9 @@ void HotPlate::beginTrial(std::uint64_t seed) {
     TaskRng rng(seed);
     const Cell start{static_cast<int>(rng.below(static_cast<std::uint32_t>(grid_.width()))),
                      static_cast<int>(rng.below(static_cast<std::uint32_t>(grid_.height())))};
-    const int signal = static_cast<int>(rng.below(static_cast<std::uint32_t>(signalValues(config_))));
+    int signal = static_cast<int>(rng.below(static_cast<std::uint32_t>(signalValues(config_))));
+    if (config_.swapTrial > 0) signal = trialsBegun_ >= config_.swapTrial ? 1 : 0;  // the hidden safe end
+    ++trialsBegun_;
     place(start, signal);
 }
 

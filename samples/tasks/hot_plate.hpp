@@ -3,6 +3,8 @@
 //   plain:    every edge is safe (1D: both ends; 2D: all four borders).
 //   signaled: one edge is safe, chosen at random each trial; a discrete signal sensor says which
 //             (1D: 0 left, 1 right; 2D: 0 left, 1 right, 2 top, 3 bottom).
+//   swapping: 1D, one safe end and no signal: the left end until trial swapTrial (counted on this
+//             instance), the right end from then on, so an agent that knew the plate must relearn it.
 // Protocol of the original library's own hot-plate tests (read from its source, 2008): the start
 // is uniformly random over ALL cells, and a start inside the safe zone is a finished trial of 0
 // steps; a trial is cut off after 200 steps. The optimum is then 4.5 (1D), 2.85 (2D) and 9.5
@@ -22,6 +24,7 @@ struct HotPlateConfig {
     Sensors sensors = Sensors::Discrete;
     int size = 20;  // cells per axis
     std::uint32_t maxSteps = 200;  // a trial is cut off here (the original experiments' cap)
+    std::uint32_t swapTrial = 0;   // 1D only: > 0 makes it a swapping plate (above)
 };
 
 class HotPlate final : public Task {
@@ -47,12 +50,14 @@ public:
 
 private:
     std::uint32_t distanceToSafety(Cell c) const;
+    bool oneSafeEdge() const { return config_.signaled || config_.swapTrial > 0; }
 
     HotPlateConfig config_;
     Grid grid_;
     Cell position_{};
     int signal_ = 0;
     std::uint32_t optimal_ = 0;
+    std::uint64_t trialsBegun_ = 0;
 };
 
 }  // namespace verve::tasks

@@ -16,10 +16,15 @@ struct MazeLayout {
     Grid grid;
     Cell start;
     Cell goal;
+    // A changing world: from trial goalMoveTrial on (counted per Maze), the goal is movedGoal.
+    std::uint32_t goalMoveTrial = 0;  // 0: the goal never moves
+    Cell movedGoal;
 };
 
 MazeLayout maze1Layout();  // wall between columns 6|7 on rows 0-8; shortest path 22
 MazeLayout maze2Layout();  // walls 3|4 rows 1-9, 5|6 rows 0-8, 7|8 rows 0-8; shortest path 25
+// Maze #1 whose goal moves to the bottom-left corner (0, 9), shortest path 9, after trial 50.
+MazeLayout maze1MovingGoalLayout();
 
 class Maze final : public Task {
 public:
@@ -34,16 +39,20 @@ public:
     StepResult act(std::uint32_t action) override;
 
     std::uint32_t optimalSteps() const override { return optimal_; }
-    bool succeeded() const override { return position_ == layout_.goal; }
+    bool succeeded() const override { return position_ == goal(); }
 
     const MazeLayout& layout() const { return layout_; }
     Cell position() const { return position_; }
 
 private:
+    Cell goal() const { return moved_ ? layout_.movedGoal : layout_.goal; }
+
     MazeLayout layout_;
     Sensors sensors_;
     Cell position_{};
     std::uint32_t optimal_ = 0;
+    std::uint64_t trialsBegun_ = 0;
+    bool moved_ = false;
 };
 
 }  // namespace verve::tasks

@@ -1,6 +1,8 @@
 #include "tasks/registry.hpp"
 
 #include "tasks/bandit.hpp"
+#include "tasks/corridor.hpp"
+#include "tasks/cue_change.hpp"
 #include "tasks/curiosity_grid.hpp"
 #include "tasks/hot_plate.hpp"
 #include "tasks/maze.hpp"
@@ -71,6 +73,26 @@ std::vector<TaskInfo> makeRegistry() {
          curiosityGrid(CuriosityAgent::Planning), 30, 81, Metric::Reward},
         {"curiosity-grid-curious", "curiosity grid, planning <= 50 steps plus curiosity",
          curiosityGrid(CuriosityAgent::Curious), 30, 81, Metric::Reward},
+        // Long horizon: -1 per step for dozens of steps before the only reward.
+        {"corridor", "40-cell continuous corridor, -1 per step to the far end (optimum 39), no planning",
+         [](std::uint64_t) { return std::make_unique<Corridor>(); }, 10, 100, Metric::Steps},
+        {"corridor-planning", "the corridor with planning <= 50 steps, model rate 1",
+         [](std::uint64_t) {
+             auto task = std::make_unique<Corridor>();
+             task->settings().planning = true;
+             task->settings().tauModel = 0.0f;
+             task->settings().maxPlanningSteps = 50;
+             return task;
+         },
+         10, 100, Metric::Steps},
+        // A changing world: the rules change once the agent has learned them.
+        {"cue-change", "8 cues -> 5 actions (+1/-1); 4 cues change their correct action at trial 1000",
+         [](std::uint64_t seed) { return std::make_unique<CueChange>(seed); }, 20, 2000, Metric::Success},
+        {"maze1-moving-goal", "maze #1, discrete position; the goal moves to (0, 9) at trial 50",
+         maze(maze1MovingGoalLayout, D, false), 50, 150, Metric::Steps},
+        {"swapping-hot-plate-1d", "1D hot plate, left end safe until trial 100, then only the right end",
+         [](std::uint64_t) { return std::make_unique<HotPlate>(HotPlateConfig{1, false, Sensors::Discrete, 20, 200, 100}); },
+         100, 300, Metric::Steps},
     };
 }
 

@@ -32,6 +32,9 @@ public:
     // next slice's first update (carriedReward), so nothing is learned as if the stream had ended.
     virtual bool continuing() const { return false; }
     virtual float carriedReward() const { return 0.0f; }
+    // How a trial cut off at the step cap ends: Agent::truncateEpisode (true, the default), or, for
+    // a task that keeps the original library's protocol, Agent::resetShortTermMemory.
+    virtual bool truncatesAtCap() const { return true; }
 
 protected:
     AgentDescriptor settings_;

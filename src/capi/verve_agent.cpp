@@ -1,4 +1,6 @@
 // Agent life cycle and stepping.
+#include <string>
+
 #include "capi/capi_agent.hpp"
 #include "capi/capi_desc.hpp"
 
@@ -41,8 +43,46 @@ VERVE_API verve_result VERVE_CALL verve_agent_update(verve_agent* agent, float r
     });
 }
 
+VERVE_API verve_result VERVE_CALL verve_agent_update_masked(verve_agent* agent, float reward, const int32_t* discrete,
+                                                            uint32_t n_discrete, const float* continuous,
+                                                            uint32_t n_continuous, float dt, const uint8_t* action_mask,
+                                                            uint32_t n_actions, uint32_t* out_action) {
+    return guarded(__func__, [&] {
+        verve::Agent& a = agentOf(agent);
+        requireArg(out_action, "out_action");
+        requireArg(action_mask, "action_mask");
+        if (n_discrete > 0) requireArg(discrete, "discrete (with n_discrete > 0)");
+        if (n_continuous > 0) requireArg(continuous, "continuous (with n_continuous > 0)");
+        *out_action = a.update(reward, verve::ObservationView{discrete, n_discrete, continuous, n_continuous}, dt,
+                               verve::ActionMask{action_mask, n_actions});
+    });
+}
+
 VERVE_API verve_result VERVE_CALL verve_agent_end_episode(verve_agent* agent, float final_reward) {
     return guarded(__func__, [&] { agentOf(agent).endEpisode(final_reward); });
+}
+
+VERVE_API verve_result VERVE_CALL verve_agent_truncate_episode(verve_agent* agent, float reward) {
+    return guarded(__func__, [&] { agentOf(agent).truncateEpisode(reward); });
+}
+
+VERVE_API verve_result VERVE_CALL verve_agent_set_action_selection(verve_agent* agent, uint32_t mode) {
+    return guarded(__func__, [&] {
+        verve::Agent& a = agentOf(agent);
+        if (mode != VERVE_ACTION_SAMPLE && mode != VERVE_ACTION_GREEDY) {
+            throw verve::Error(verve::ErrorCode::InvalidArgument,
+                               "mode must be VERVE_ACTION_SAMPLE or VERVE_ACTION_GREEDY, got " + std::to_string(mode));
+        }
+        a.setActionSelection(static_cast<verve::ActionSelection>(mode));
+    });
+}
+
+VERVE_API verve_result VERVE_CALL verve_agent_get_action_selection(const verve_agent* agent, uint32_t* out_mode) {
+    return guarded(__func__, [&] {
+        const verve::Agent& a = agentOf(agent);
+        requireArg(out_mode, "out_mode");
+        *out_mode = static_cast<uint32_t>(a.actionSelection());
+    });
 }
 
 VERVE_API verve_result VERVE_CALL verve_agent_reset_short_term_memory(verve_agent* agent) {

@@ -1,4 +1,5 @@
 // Read-outs: value, TD error, RBF count, statistics, value-function images.
+#include <algorithm>
 #include <string>
 #include <vector>
 
@@ -39,6 +40,20 @@ VERVE_API verve_result VERVE_CALL verve_agent_get_td_error(const verve_agent* ag
         const verve::Agent& a = agentOf(agent);
         requireArg(out_td_error, "out_td_error");
         *out_td_error = a.tdError();
+    });
+}
+
+VERVE_API verve_result VERVE_CALL verve_agent_get_action_probabilities(const verve_agent* agent, float* out,
+                                                                      uint32_t count) {
+    return guarded(__func__, [&] {
+        const verve::Agent& a = agentOf(agent);
+        requireArg(out, "out");
+        const std::vector<float>& p = a.actionProbabilities();
+        if (count != p.size()) {
+            throw verve::Error(verve::ErrorCode::InvalidArgument, "count is " + std::to_string(count) +
+                                                                      ", the agent has " + std::to_string(p.size()) + " actions");
+        }
+        std::copy(p.begin(), p.end(), out);
     });
 }
 

@@ -35,6 +35,7 @@ Agent::Impl::Impl(const AgentDescriptor& d)
     previousDiscrete.assign(desc.discreteSensors.size(), 0);
     previousContinuous.assign(desc.continuousSensors.size(), 0.0f);
     stats.rbfCount = rep.featureCount();
+    probabilities.assign(desc.numActions, 1.0f / static_cast<float>(desc.numActions));
 }
 
 StepConstants Agent::Impl::constantsFor(float dt) const {
@@ -43,6 +44,7 @@ StepConstants Agent::Impl::constantsFor(float dt) const {
     k.traceDecay = k.gamma * decayFromTimeConstant(dt, desc.tauEligibility);
     k.rates.value = rateFromTimeConstant(dt, desc.tauValue) / rep.activationSum();
     k.rates.policy = desc.policyMultiplier * k.rates.value;
+    k.rates.policyBound = desc.policyWeightBound;
     // Rewards are clamped to [-1, 1]; curiosity adds up to its factor on imagined steps.
     const float rewardBound = 1.0f + (desc.planning && desc.curiosity != CuriosityMode::None ? desc.curiosityFactor : 0.0f);
     k.valueBound = core::valueBound(rewardBound, k.gamma);
@@ -79,6 +81,22 @@ void Agent::Impl::plan(const StepConstants& k) {
     stats.curiosityReward = result.curiosity;
 }
 
+void Agent::Impl::recordProbabilities(const std::uint8_t* allowed) {
+    float total = 0.0f;
+    for (float y : activations) total += y;
+    if (total > 0.0f && std::isfinite(total)) {
+        for (std::size_t a = 0; a < activations.size(); ++a) probabilities[a] = activations[a] / total;
+        return;
+    }
+    // Every activation underflowed: the choice was uniform among the allowed actions.
+    float count = 0.0f;
+    for (std::size_t a = 0; a < probabilities.size(); ++a) {
+        probabilities[a] = allowed == nullptr || allowed[a] != 0 ? 1.0f : 0.0f;
+        count += probabilities[a];
+    }
+    for (float& p : probabilities) p /= count;
+}
+
 void Agent::Impl::resetShortTermMemory() {
     td.clear();
     hasPrevious = false;
@@ -93,9 +111,12 @@ Agent& Agent::operator=(Agent&&) noexcept = default;
 
 std::uint32_t Agent::update(float reward, const Observation& obs, float dt) { return update(reward, obs.view(), dt); }
 
-std::uint32_t Agent::update(float reward, ObservationView obs, float dt) {
+std::uint32_t Agent::update(float reward, ObservationView obs, float dt) { return update(reward, obs, dt, ActionMask{}); }
+
+std::uint32_t Agent::update(float reward, ObservationView obs, float dt, ActionMask mask) {
     Impl& s = *impl_;
     // Everything is checked before anything changes.
+    if (mask.allowed != nullptr || mask.count != 0) core::checkActionMask(s.desc, mask.allowed, mask.count);
     core::checkObservation(s.desc, obs, s.normalized);
     core::checkFinite(reward, "reward");
     core::checkTimeStep(dt);
@@ -123,7 +144,9 @@ std::uint32_t Agent::update(float reward, ObservationView obs, float dt) {
     // Plan from the state just reached, before acting, so the action already uses what it taught.
     if (plans) s.plan(k);
 
-    const std::uint32_t action = s.td.chooseAction(s.weights, s.current, s.rng, s.activations, s.stats.value);
+    const std::uint32_t action = s.td.chooseAction(s.weights, s.current, s.rng, s.activations, s.stats.value,
+                                                   mask.allowed, s.selection == ActionSelection::Greedy);
+    s.recordProbabilities(mask.allowed);
     if (s.learning && s.learnsFromRealSteps()) s.td.mark(s.current, action, s.rep.featureCount());
 
     std::swap(s.previous, s.current);
@@ -154,7 +177,33 @@ void Agent::endEpisode(float finalReward) {
     s.resetShortTermMemory();
 }
 
+void Agent::truncateEpisode(float reward) {
+    Impl& s = *impl_;
+    core::checkFinite(reward, "reward");
+    const float r = std::clamp(reward, -1.0f, 1.0f);
+    if (s.learning && s.hasPrevious && s.learnsFromRealSteps()) {
+        // Not terminal: the trial would have gone on from where the last action led, which the
+        // agent never saw; the last state's value stands in for it: delta = r + gamma V(s) - V(s).
+        const StepConstants k = s.constantsFor(s.lastDt);
+        const float v = core::bounded(s.td.value(s.weights, s.previous), k.valueBound);
+        const float delta = r + k.gamma * v - v;
+        s.td.trainAndDecay(s.weights, delta, k.rates, 0.0f);
+        s.stats.tdError = delta;
+    }
+    s.resetShortTermMemory();
+}
+
 void Agent::resetShortTermMemory() { impl_->resetShortTermMemory(); }
+
+void Agent::setActionSelection(ActionSelection mode) {
+    if (mode != ActionSelection::Sample && mode != ActionSelection::Greedy) {
+        throw Error(ErrorCode::InvalidArgument, "action selection must be Sample or Greedy");
+    }
+    impl_->selection = mode;
+}
+
+ActionSelection Agent::actionSelection() const { return impl_->selection; }
+const std::vector<float>& Agent::actionProbabilities() const { return impl_->probabilities; }
 
 void Agent::setLearning(bool enabled) {
     if (impl_->learning == enabled) return;

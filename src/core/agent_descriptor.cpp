@@ -39,6 +39,8 @@ void AgentDescriptor::validate() const {
             "policyMultiplier must be a finite number >= 0");
     require(std::isfinite(traceThreshold) && traceThreshold > 0.0f && traceThreshold < 1.0f,
             "traceThreshold must be in (0, 1)");
+    require(std::isfinite(policyWeightBound) && policyWeightBound >= 0.0f,
+            "policyWeightBound must be a finite number >= 0 (0: unbounded)");
     require(allocation == RbfAllocation::Dynamic || allocation == RbfAllocation::Full,
             "allocation must be Dynamic or Full");
     require(maxPlanningSteps <= 100000, "maxPlanningSteps must be at most 100000");

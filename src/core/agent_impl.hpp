@@ -33,6 +33,8 @@ struct Agent::Impl {
     void learnModelTerminal(float reward);
     void plan(const StepConstants& k);
     void recordModelError(float error);
+    // probabilities = activations / their sum (uniform over the allowed actions if all underflowed).
+    void recordProbabilities(const std::uint8_t* allowed);
     static constexpr float kModelErrorAveraging = 0.05f;  // stats.modelError: ~20-step running mean
     bool learnsFromRealSteps() const { return !desc.planning || desc.learnFromRealSteps; }
 
@@ -44,6 +46,8 @@ struct Agent::Impl {
     core::PredictiveModel model;
     core::Planner planner;
     bool learning = true;
+    ActionSelection selection = ActionSelection::Sample;
+    std::vector<float> probabilities;  // of the latest update's choice
 
     // Short-term memory: the previous step.
     bool hasPrevious = false;

@@ -21,6 +21,20 @@ void checkTimeStep(float dt) {
     if (!std::isfinite(dt) || dt <= 0.0f) refuse("dt must be a finite number > 0, got " + std::to_string(dt));
 }
 
+void checkActionMask(const AgentDescriptor& desc, const std::uint8_t* allowed, std::size_t count) {
+    if (allowed == nullptr) refuse("the action mask is NULL");
+    if (count != desc.numActions) {
+        refuse("the action mask has " + std::to_string(count) + " flags, the agent has " +
+               std::to_string(desc.numActions) + " actions");
+    }
+    bool any = false;
+    for (std::size_t a = 0; a < count; ++a) {
+        if (allowed[a] > 1) refuse("action mask flag " + std::to_string(a) + " must be 0 or 1, got " + std::to_string(allowed[a]));
+        any = any || allowed[a] == 1;
+    }
+    if (!any) refuse("the action mask allows no action (at least one flag must be 1)");
+}
+
 void checkObservation(const AgentDescriptor& desc, ObservationView obs, std::vector<float>& normalized) {
     const auto nd = desc.discreteSensors.size();
     const auto nc = desc.continuousSensors.size();

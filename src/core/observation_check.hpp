@@ -1,5 +1,6 @@
 // Input validation, done before anything changes so a refused call leaves the agent untouched.
 #pragma once
+#include <cstddef>
 #include <cstdint>
 #include <vector>
 
@@ -13,5 +14,7 @@ namespace verve::core {
 void checkObservation(const AgentDescriptor& desc, ObservationView obs, std::vector<float>& normalized);
 void checkFinite(float value, const char* what);
 void checkTimeStep(float dt);
+// An action mask: numActions flags, each 0 or 1, at least one 1.
+void checkActionMask(const AgentDescriptor& desc, const std::uint8_t* allowed, std::size_t count);
 
 }  // namespace verve::core

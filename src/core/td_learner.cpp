@@ -15,7 +15,8 @@ float TdLearner::value(const WeightTable& w, const std::vector<ActiveFeature>& p
 }
 
 std::uint32_t TdLearner::chooseAction(const WeightTable& w, const std::vector<ActiveFeature>& phi, Rng& rng,
-                                      std::vector<float>& activations, float& value) const {
+                                      std::vector<float>& activations, float& value, const std::uint8_t* allowed,
+                                      bool greedy) const {
     activations.assign(numActions_, 0.0f);
     float v = 0.0f;
     for (const auto& f : phi) {
@@ -25,11 +26,15 @@ std::uint32_t TdLearner::chooseAction(const WeightTable& w, const std::vector<Ac
     }
     value = v;
     float total = 0.0f;
-    for (auto& y : activations) {
-        y = 1.0f / (1.0f + std::exp(-y));
+    std::uint32_t best = numActions_;
+    for (std::uint32_t a = 0; a < numActions_; ++a) {
+        float& y = activations[a];
+        y = allowed == nullptr || allowed[a] != 0 ? 1.0f / (1.0f + std::exp(-y)) : 0.0f;
         total += y;
+        if ((allowed == nullptr || allowed[a] != 0) && (best == numActions_ || y > activations[best])) best = a;
     }
-    if (!(total > 0.0f) || !std::isfinite(total)) return rng.below(numActions_);
+    if (greedy) return best;
+    if (!(total > 0.0f) || !std::isfinite(total)) return uniformAllowed(rng, allowed);
     // Roulette (winner-take-all): each action in proportion to its neuron's activation.
     float pick = rng.uniform() * total;
     for (std::uint32_t a = 0; a < numActions_; ++a) {
@@ -40,13 +45,25 @@ std::uint32_t TdLearner::chooseAction(const WeightTable& w, const std::vector<Ac
     for (std::uint32_t a = numActions_; a-- > 0;) {
         if (activations[a] > 0.0f) return a;
     }
-    return numActions_ - 1;
+    return best;
+}
+
+std::uint32_t TdLearner::uniformAllowed(Rng& rng, const std::uint8_t* allowed) const {
+    if (allowed == nullptr) return rng.below(numActions_);
+    std::uint32_t count = 0;
+    for (std::uint32_t a = 0; a < numActions_; ++a) count += allowed[a] != 0;
+    std::uint32_t pick = rng.below(count);
+    for (std::uint32_t a = 0; a < numActions_; ++a) {
+        if (allowed[a] != 0 && pick-- == 0) return a;
+    }
+    return 0;  // unreachable: callers allow at least one action
 }
 
 void TdLearner::trainAndDecay(WeightTable& w, float delta, TdRates rates, float decay) {
     // A trace row [value, policy[A]] lines up with the first 1 + A weights of its feature's row.
     step_.assign(stride_, rates.policy * delta);
     step_[0] = rates.value * delta;
+    const bool bounded = rates.policyBound > 0.0f;
     std::uint32_t kept = 0;
     for (std::uint32_t i = 0; i < liveCount_; ++i) {
         const std::uint32_t feature = live_[i];
@@ -55,6 +72,9 @@ void TdLearner::trainAndDecay(WeightTable& w, float delta, TdRates rates, float 
         for (std::uint32_t k = 0; k < stride_; ++k) {
             row[k] += step_[k] * e[k];
             e[k] *= decay;
+        }
+        if (bounded) {
+            for (std::uint32_t k = 1; k < stride_; ++k) row[k] = std::clamp(row[k], -rates.policyBound, rates.policyBound);
         }
         // Branch-free compaction, in order, so results never depend on drop patterns.
         const bool keep = e[0] >= threshold_;

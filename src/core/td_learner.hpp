@@ -21,6 +21,7 @@ namespace verve::core {
 struct TdRates {
     float value = 0.0f;   // eta_value
     float policy = 0.0f;  // eta_policy = k * eta_value
+    float policyBound = 0.0f;  // > 0: every actor weight stays within +-policyBound (0: unbounded)
 };
 
 // No state is worth more, in size, than the largest reward discounted forever: rewardBound / (1 - gamma).
@@ -38,9 +39,12 @@ public:
 
     float value(const WeightTable& w, const std::vector<ActiveFeature>& phi) const;
     // Roulette choice over the sigmoid action activations y_a (left in `activations`); one pass
-    // over the features also yields V(s) into `value`.
+    // over the features also yields V(s) into `value`. `allowed` (numActions flags, or nullptr for
+    // all) zeroes the activation of every action not allowed, so it is never chosen; `greedy` takes
+    // the largest activation (the lowest index on ties) and draws no random number.
     std::uint32_t chooseAction(const WeightTable& w, const std::vector<ActiveFeature>& phi, Rng& rng,
-                               std::vector<float>& activations, float& value) const;
+                               std::vector<float>& activations, float& value,
+                               const std::uint8_t* allowed = nullptr, bool greedy = false) const;
 
     // w += eta * delta * e over the live traces, then e *= decay; traces whose every component
     // falls below the threshold are dropped. One pass: both follow the live list.
@@ -58,6 +62,8 @@ public:
                  std::uint32_t featureCount);
 
 private:
+    // Every underflowed activation: a uniform choice among the allowed actions.
+    std::uint32_t uniformAllowed(Rng& rng, const std::uint8_t* allowed) const;
     void grow(std::uint32_t featureCount);
     float* trace(std::uint32_t feature) { return traces_.data() + std::size_t(feature) * stride_; }
 

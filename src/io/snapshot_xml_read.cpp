@@ -94,6 +94,7 @@ AgentDescriptor readDescriptor(pugi::xml_node root) {
     d.tauEligibility = readFloat(n, "tau_eligibility");
     d.policyMultiplier = readFloat(n, "policy_multiplier");
     d.traceThreshold = readFloat(n, "trace_threshold");
+    if (n.attribute("policy_weight_bound")) d.policyWeightBound = readFloat(n, "policy_weight_bound");  // absent: 0
     d.seed = readUint64(n, "seed");
     d.planning = readBool(n, "planning");
     d.tauModel = readFloat(n, "tau_model");

@@ -70,6 +70,8 @@ void writeDescriptor(pugi::xml_node root, const AgentDescriptor& d) {
     setNumber(n, "tau_eligibility", d.tauEligibility);
     setNumber(n, "policy_multiplier", d.policyMultiplier);
     setNumber(n, "trace_threshold", d.traceThreshold);
+    // Written only when set, so saves of agents without it stay readable by older libraries.
+    if (d.policyWeightBound > 0.0f) setNumber(n, "policy_weight_bound", d.policyWeightBound);
     setNumber(n, "seed", d.seed);
     n.append_attribute("planning").set_value(d.planning);
     setNumber(n, "tau_model", d.tauModel);

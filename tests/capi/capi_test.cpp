@@ -101,6 +101,7 @@ TEST_F(CApi, NullPointersAreRefused) {
     stats.struct_size = sizeof stats;
     verve_value_axis axis = {VERVE_SENSOR_CONTINUOUS, 0, 4};
     float values[4];
+    const uint8_t mask[3] = {1, 1, 1};
 
     const verve_result results[] = {
         verve_agent_desc_init(nullptr, sizeof d),
@@ -111,6 +112,15 @@ TEST_F(CApi, NullPointersAreRefused) {
         verve_agent_update(agent_, 0.0f, nullptr, 1, &f, 1, 0.1f, &u),
         verve_agent_update(agent_, 0.0f, &disc, 1, nullptr, 1, 0.1f, &u),
         verve_agent_end_episode(nullptr, 0.0f),
+        verve_agent_truncate_episode(nullptr, 0.0f),
+        verve_agent_update_masked(nullptr, 0.0f, &disc, 1, &f, 1, 0.1f, mask, 3, &u),
+        verve_agent_update_masked(agent_, 0.0f, &disc, 1, &f, 1, 0.1f, nullptr, 3, &u),
+        verve_agent_update_masked(agent_, 0.0f, &disc, 1, &f, 1, 0.1f, mask, 3, nullptr),
+        verve_agent_set_action_selection(nullptr, VERVE_ACTION_GREEDY),
+        verve_agent_get_action_selection(nullptr, &u),
+        verve_agent_get_action_selection(agent_, nullptr),
+        verve_agent_get_action_probabilities(nullptr, values, 3),
+        verve_agent_get_action_probabilities(agent_, nullptr, 3),
         verve_agent_reset_short_term_memory(nullptr),
         verve_agent_set_learning(nullptr, 1),
         verve_agent_get_learning(nullptr, &i),
@@ -147,6 +157,74 @@ TEST_F(CApi, NullPointersAreRefused) {
     verve_agent_destroy(nullptr);
     verve_agent_desc_default(nullptr);
     EXPECT_EQ(saved(), before);
+}
+
+TEST_F(CApi, PolicyReadOutsGreedyModeMasksAndTruncation) {
+    float p[3] = {0, 0, 0};
+    ASSERT_EQ(verve_agent_get_action_probabilities(agent_, p, 3), VERVE_OK) << verve_last_error();
+    EXPECT_NEAR(p[0] + p[1] + p[2], 1.0f, 1e-5f);
+    const std::string before = saved();
+    expectRefusedUnchanged(VERVE_ERROR_INVALID_ARGUMENT, verve_agent_get_action_probabilities(agent_, p, 2));
+    expectRefusedUnchanged(VERVE_ERROR_INVALID_ARGUMENT, verve_agent_set_action_selection(agent_, 2));
+    int32_t d = 1;
+    float c = 0.3f;
+    uint32_t action = 99;
+    const uint8_t none[3] = {0, 0, 0}, notFlag[3] = {1, 3, 0}, onlyLast[3] = {0, 0, 1};
+    expectRefusedUnchanged(VERVE_ERROR_INVALID_ARGUMENT,
+                           verve_agent_update_masked(agent_, 0.0f, &d, 1, &c, 1, 0.1f, none, 3, &action));
+    expectRefusedUnchanged(VERVE_ERROR_INVALID_ARGUMENT,
+                           verve_agent_update_masked(agent_, 0.0f, &d, 1, &c, 1, 0.1f, notFlag, 3, &action));
+    expectRefusedUnchanged(VERVE_ERROR_INVALID_ARGUMENT,
+                           verve_agent_update_masked(agent_, 0.0f, &d, 1, &c, 1, 0.1f, onlyLast, 2, &action));
+    expectRefusedUnchanged(VERVE_ERROR_INVALID_ARGUMENT, verve_agent_truncate_episode(agent_, kNaN));
+    EXPECT_EQ(action, 99u);
+    EXPECT_EQ(saved(), before);
+
+    for (int i = 0; i < 20; ++i) {
+        ASSERT_EQ(verve_agent_update_masked(agent_, 0.0f, &d, 1, &c, 1, 0.1f, onlyLast, 3, &action), VERVE_OK);
+        EXPECT_EQ(action, 2u);
+    }
+    ASSERT_EQ(verve_agent_get_action_probabilities(agent_, p, 3), VERVE_OK);
+    EXPECT_EQ(p[0], 0.0f);
+    EXPECT_FLOAT_EQ(p[2], 1.0f);
+    EXPECT_EQ(verve_agent_truncate_episode(agent_, -0.5f), VERVE_OK) << verve_last_error();
+
+    uint32_t mode = 99;
+    ASSERT_EQ(verve_agent_get_action_selection(agent_, &mode), VERVE_OK);
+    EXPECT_EQ(mode, uint32_t{VERVE_ACTION_SAMPLE});
+    ASSERT_EQ(verve_agent_set_action_selection(agent_, VERVE_ACTION_GREEDY), VERVE_OK);
+    ASSERT_EQ(verve_agent_get_action_selection(agent_, &mode), VERVE_OK);
+    EXPECT_EQ(mode, uint32_t{VERVE_ACTION_GREEDY});
+    ASSERT_EQ(verve_agent_set_learning(agent_, 0), VERVE_OK);
+    const uint32_t first = step(d, c, 0.0f);
+    ASSERT_EQ(verve_agent_get_action_probabilities(agent_, p, 3), VERVE_OK);
+    for (uint32_t a = 0; a < 3; ++a) EXPECT_LE(p[a], p[first]);
+    for (int i = 0; i < 20; ++i) EXPECT_EQ(step(d, c, 0.0f), first);  // deterministic
+}
+
+TEST(CApiDesc, PolicyWeightBoundReachesTheAgentAndIsValidated) {
+    verve_agent_desc d = smallDesc();
+    EXPECT_EQ(d.policy_weight_bound, 0.0f);
+    d.policy_weight_bound = 6.0f;
+    verve_agent* agent = nullptr;
+    ASSERT_EQ(verve_agent_create(&d, &agent), VERVE_OK) << verve_last_error();
+    verve_agent_desc back;
+    verve_agent_desc_default(&back);
+    ASSERT_EQ(verve_agent_get_desc(agent, &back), VERVE_OK);
+    EXPECT_EQ(back.policy_weight_bound, 6.0f);
+    verve_agent_destroy(agent);
+    d.policy_weight_bound = -1.0f;
+    EXPECT_EQ(verve_agent_create(&d, &agent), VERVE_ERROR_INVALID_ARGUMENT);
+    EXPECT_NE(lastError().find("policyWeightBound"), std::string::npos) << lastError();
+    // A V2 host's struct ends before the field, whatever lies beyond it: the default applies.
+    unsigned char memory[sizeof(verve_agent_desc)];
+    std::memset(memory, 0xAB, sizeof memory);
+    verve_agent_desc* v2 = reinterpret_cast<verve_agent_desc*>(memory);
+    ASSERT_EQ(verve_agent_desc_init(v2, VERVE_AGENT_DESC_SIZE_V2), VERVE_OK);
+    ASSERT_EQ(verve_agent_create(v2, &agent), VERVE_OK) << verve_last_error();
+    ASSERT_EQ(verve_agent_get_desc(agent, &back), VERVE_OK);
+    EXPECT_EQ(back.policy_weight_bound, 0.0f);
+    verve_agent_destroy(agent);
 }
 
 TEST_F(CApi, BadObservationsChangeNothing) {
@@ -286,7 +364,7 @@ TEST(CApiDesc, AnOldSmallerStructIsAcceptedAndTheRestDefaulted) {
 
 TEST(CApiDesc, GarbageStructSizesAreRefused) {
     for (uint32_t size : {0u, 4u, VERVE_AGENT_DESC_SIZE_V1 - 8, VERVE_AGENT_DESC_SIZE_V1 + 4,
-                          VERVE_AGENT_DESC_SIZE_V2 + 8, 0xFFFFFFFFu}) {
+                          VERVE_AGENT_DESC_SIZE_V2 + 4, VERVE_AGENT_DESC_SIZE_V3 + 8, 0xFFFFFFFFu}) {
         verve_agent_desc d = smallDesc();
         d.struct_size = size;
         verve_agent* out = nullptr;

@@ -4,6 +4,7 @@
 
 /* The historical struct sizes are compile-time constants, the old one a strict prefix. */
 typedef char verve_desc_v1_is_a_prefix[(VERVE_AGENT_DESC_SIZE_V1 < VERVE_AGENT_DESC_SIZE_V2) ? 1 : -1];
+typedef char verve_desc_v2_is_a_prefix[(VERVE_AGENT_DESC_SIZE_V2 < VERVE_AGENT_DESC_SIZE_V3) ? 1 : -1];
 typedef char verve_desc_v1_ends_after_seed[
     (VERVE_AGENT_DESC_SIZE_V1 == offsetof(verve_agent_desc, seed) + sizeof(uint64_t)) ? 1 : -1];
 
@@ -15,7 +16,7 @@ int verve_header_check_c(void) {
     verve_result r = VERVE_OK;
     verve_agent* agent = NULL;
     stats.struct_size = (uint32_t)sizeof stats;
-    desc.struct_size = VERVE_AGENT_DESC_SIZE_V2;
+    desc.struct_size = VERVE_AGENT_DESC_SIZE_V3;
     (void)agent;
     return (int)r + (int)axis.samples + (int)desc.struct_size + (int)stats.struct_size + VERVE_VERSION_NUMBER;
 }

@@ -90,6 +90,20 @@ TEST(RoundTrip, DescriptorVariants) {
     }
 }
 
+TEST(RoundTrip, PolicyWeightBoundIsKeptAndOnlyWrittenWhenSet) {
+    AgentDescriptor d = iotest::mixedDescriptor();
+    const std::string unbounded = saveAgentToString(trainedAgent(d, 50));
+    EXPECT_EQ(unbounded.find("policy_weight_bound"), std::string::npos);  // older libraries read it
+    EXPECT_EQ(loadAgentFromMemory(unbounded.data(), unbounded.size()).descriptor().policyWeightBound, 0.0f);
+    d.policyWeightBound = 3.5f;
+    Agent agent = trainedAgent(d, 120);
+    const std::string xml = saveAgentToString(agent);
+    Agent loaded = loadAgentFromMemory(xml.data(), xml.size());
+    EXPECT_EQ(loaded.descriptor().policyWeightBound, 3.5f);
+    expectSameSnapshot(agent.snapshot(), loaded.snapshot());
+    expectSameFuture(agent, loaded);
+}
+
 TEST(RoundTrip, LearningSwitchIsKept) {
     Agent agent = trainedAgent(iotest::mixedDescriptor(), 100);
     agent.setLearning(false);

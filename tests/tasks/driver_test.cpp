@@ -31,6 +31,7 @@ TEST(RunTrial, CappedTrialIsNotTerminal) {
     EXPECT_FALSE(r.terminal);
     EXPECT_EQ(r.steps, 100u);
     EXPECT_EQ(agent.stats().steps, 100u);
+    EXPECT_EQ(agent.stats().liveTraces, 0u);  // truncated: the last reward learned, the trial forgotten
 }
 
 TEST(RunTrial, ContinuingTaskCarriesTheRewardAndTheShortTermMemory) {

@@ -40,7 +40,7 @@ int RunTrial(Agent a)
             return step - optimal;
         }
     }
-    a.EndEpisode(reward);
+    a.TruncateEpisode(reward); // out of time, not a real end: the plate goes on
     return MaxSteps - optimal;
 }
 

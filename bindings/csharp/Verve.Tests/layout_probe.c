@@ -32,6 +32,8 @@ int main(void) {
     FIELD(verve_agent_desc, planning_accumulates_uncertainty);
     FIELD(verve_agent_desc, learn_from_real_steps);
     FIELD(verve_agent_desc, discrete_prediction);
+    FIELD(verve_agent_desc, reserved_v2);
+    FIELD(verve_agent_desc, policy_weight_bound);
 
     SIZE(verve_agent_stats);
     FIELD(verve_agent_stats, struct_size);
@@ -50,7 +52,8 @@ int main(void) {
     FIELD(verve_value_axis, index);
     FIELD(verve_value_axis, samples);
 
-    printf("const VERVE_AGENT_DESC_SIZE_V2 %u\n", (unsigned)VERVE_AGENT_DESC_SIZE_V2);
+    printf("const VERVE_AGENT_DESC_SIZE_V3 %u\n", (unsigned)VERVE_AGENT_DESC_SIZE_V3);
+    printf("const VERVE_GREEDY %d\n", VERVE_ACTION_GREEDY);
     printf("const VERVE_VERSION_NUMBER %d\n", VERVE_VERSION_NUMBER);
     printf("const VERVE_MAX_DISCRETE_SENSORS %d\n", VERVE_MAX_DISCRETE_SENSORS);
     printf("const VERVE_MAX_CONTINUOUS_SENSORS %d\n", VERVE_MAX_CONTINUOUS_SENSORS);

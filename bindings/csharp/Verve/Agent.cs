@@ -57,9 +57,65 @@ namespace Verve
             return (int)action;
         }
 
-        /// <summary>Ends a trial with a terminal reward; nothing is bootstrapped past it.</summary>
+        /// <summary>One step choosing only among the actions <paramref name="allowed"/> permits
+        /// (one flag per action, 1 allowed, 0 not, at least one 1). A masked action is never chosen and gets no credit.</summary>
+        /// <exception cref="VerveException">As <see cref="Update(float, ReadOnlySpan{int}, ReadOnlySpan{float}, float)"/>,
+        /// or a mask of the wrong length, with a flag other than 0/1, or allowing nothing.</exception>
+        public unsafe int Update(float reward, ReadOnlySpan<int> discrete, ReadOnlySpan<float> continuous, float dt,
+            ReadOnlySpan<byte> allowed)
+        {
+            AgentHandle handle = Handle;
+            uint action;
+            fixed (int* d = discrete)
+            fixed (float* c = continuous)
+            fixed (byte* m = allowed)
+            {
+                VerveException.ThrowIfFailed(NativeMethods.verve_agent_update_masked(handle, reward,
+                    d, (uint)discrete.Length, c, (uint)continuous.Length, dt, m, (uint)allowed.Length, out action));
+            }
+            return (int)action;
+        }
+
+        /// <summary>Ends a trial that really ended (goal reached, NPC died): <paramref name="finalReward"/> is the
+        /// last reward there is; nothing is expected after it.</summary>
         public void EndEpisode(float finalReward) =>
             VerveException.ThrowIfFailed(NativeMethods.verve_agent_end_episode(Handle, finalReward));
+
+        /// <summary>Ends a trial that was cut off (a time limit, a level reset) where the world would have gone on:
+        /// <paramref name="reward"/> (what the last action earned) is learned, and the last state's value stands in
+        /// for what would have followed.</summary>
+        public void TruncateEpisode(float reward) =>
+            VerveException.ThrowIfFailed(NativeMethods.verve_agent_truncate_episode(Handle, reward));
+
+        /// <summary>How <see cref="Update(float, int[], float[], float)"/> picks its action; per agent, not saved.</summary>
+        public ActionSelection ActionSelection
+        {
+            get
+            {
+                VerveException.ThrowIfFailed(NativeMethods.verve_agent_get_action_selection(Handle, out uint mode));
+                return (ActionSelection)mode;
+            }
+            set => VerveException.ThrowIfFailed(NativeMethods.verve_agent_set_action_selection(Handle, (uint)value));
+        }
+
+        /// <summary>The policy's probability of each action at the latest update (summing to 1; 0 for masked
+        /// actions); uniform before any update.</summary>
+        public unsafe float[] ActionProbabilities
+        {
+            get
+            {
+                AgentHandle handle = Handle;
+                var desc = new verve_agent_desc { struct_size = (uint)sizeof(verve_agent_desc) };
+                VerveException.ThrowIfFailed(NativeMethods.verve_agent_get_desc(handle, &desc));
+                var probabilities = new float[desc.num_actions];
+                fixed (float* p = probabilities)
+                {
+                    VerveException.ThrowIfFailed(NativeMethods.verve_agent_get_action_probabilities(handle, p,
+                        (uint)probabilities.Length));
+                }
+                return probabilities;
+            }
+        }
 
         /// <summary>Forgets the current trial (traces, previous observation) but keeps everything learned.</summary>
         public void ResetShortTermMemory() =>

@@ -55,6 +55,7 @@ namespace Verve
             PlanningAccumulatesUncertainty = d.planning_accumulates_uncertainty != 0;
             LearnFromRealSteps = d.learn_from_real_steps != 0;
             DiscretePrediction = (DiscretePrediction)d.discrete_prediction;
+            PolicyWeightBound = d.policy_weight_bound;
         }
 
         /// <summary>Value count of each discrete sensor, in observation order.</summary>
@@ -117,6 +118,10 @@ namespace Verve
         /// <summary>How the model predicts discrete sensors.</summary>
         public DiscretePrediction DiscretePrediction { get; set; }
 
+        /// <summary>Above 0, every actor weight stays within +-bound, so a habit can be unlearned when the
+        /// world changes (with a slow critic and a large policy multiplier); 0 (default): unbounded.</summary>
+        public float PolicyWeightBound { get; set; }
+
         /// <summary>Adds a discrete sensor reading integers 0 .. <paramref name="values"/> - 1.</summary>
         public AgentOptions AddDiscreteSensor(int values)
         {
@@ -170,6 +175,7 @@ namespace Verve
             d.planning_accumulates_uncertainty = PlanningAccumulatesUncertainty ? 1u : 0u;
             d.learn_from_real_steps = LearnFromRealSteps ? 1u : 0u;
             d.discrete_prediction = (uint)DiscretePrediction;
+            d.policy_weight_bound = PolicyWeightBound;
             return d;
         }
 

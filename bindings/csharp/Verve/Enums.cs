@@ -20,6 +20,15 @@ namespace Verve
         Progress = 2,
     }
 
+    /// <summary>How <see cref="Agent.Update(float, int[], float[], float)"/> picks its action (<c>verve_action_selection</c>).</summary>
+    public enum ActionSelection : uint
+    {
+        /// <summary>Each action with its probability: explores while learning (default).</summary>
+        Sample = 0,
+        /// <summary>Always the most probable action: deterministic play for a shipped NPC.</summary>
+        Greedy = 1,
+    }
+
     /// <summary>How the predictive model predicts a discrete sensor (<c>verve_discrete_prediction</c>).</summary>
     public enum DiscretePrediction : uint
     {

@@ -106,6 +106,8 @@ typedef struct lv_field {
 static const char* const lv_allocation_names[] = {"dynamic", "full", NULL};
 static const char* const lv_curiosity_names[] = {"none", "novelty", "progress", NULL};
 static const char* const lv_prediction_names[] = {"categorical", "ordinal", NULL};
+static const char* const lv_selection_names[] = {"sample", "greedy", NULL};
+#define LV_MAX_ACTIONS 4096 /* the library's limit on num_actions */
 
 #define LV_FIELD(name, member, kind, names) {name, offsetof(verve_agent_desc, member), kind, names}
 static const lv_field lv_fields[] = {
@@ -127,6 +129,7 @@ static const lv_field lv_fields[] = {
     LV_FIELD("planning_accumulates_uncertainty", planning_accumulates_uncertainty, LV_BOOL, NULL),
     LV_FIELD("learn_from_real_steps", learn_from_real_steps, LV_BOOL, NULL),
     LV_FIELD("discrete_prediction", discrete_prediction, LV_ENUM, lv_prediction_names),
+    LV_FIELD("policy_weight_bound", policy_weight_bound, LV_FLOAT, NULL),
 };
 #define LV_FIELD_COUNT (sizeof lv_fields / sizeof lv_fields[0])
 
@@ -382,6 +385,22 @@ static int lv_version(lua_State* L) {
 
 /* ---- agent methods ---------------------------------------------------------------------- */
 
+/* An optional list of booleans, one per action (true: allowed this step); returns its length. */
+static uint32_t lv_read_mask(lua_State* L, int idx, uint8_t* mask) {
+    uint32_t n, i;
+    luaL_checktype(L, idx, LUA_TTABLE);
+    n = (uint32_t)lua_rawlen(L, idx);
+    if (n > LV_MAX_ACTIONS) luaL_error(L, "verve: update: the action mask has %d entries, at most %d", (int)n, LV_MAX_ACTIONS);
+    for (i = 0; i < n; ++i) {
+        lua_rawgeti(L, idx, (int)i + 1);
+        if (!lua_isboolean(L, -1))
+            luaL_error(L, "verve: update: mask[%d] must be true or false (got %s)", (int)i + 1, luaL_typename(L, -1));
+        mask[i] = lua_toboolean(L, -1) ? 1 : 0;
+        lua_pop(L, 1);
+    }
+    return n;
+}
+
 static int lv_update(lua_State* L) {
     verve_agent* a = lv_open_agent(L);
     float reward = lv_to_float(luaL_checknumber(L, 2));
@@ -390,7 +409,14 @@ static int lv_update(lua_State* L) {
     lv_obs o;
     verve_result r;
     lv_read_obs(L, 3, "update", &o);
-    r = verve_agent_update(a, reward, o.discrete, o.n_discrete, o.continuous, o.n_continuous, dt, &action);
+    if (lua_isnoneornil(L, 5)) {
+        r = verve_agent_update(a, reward, o.discrete, o.n_discrete, o.continuous, o.n_continuous, dt, &action);
+    } else {
+        uint8_t mask[LV_MAX_ACTIONS];
+        uint32_t n = lv_read_mask(L, 5, mask);
+        r = verve_agent_update_masked(a, reward, o.discrete, o.n_discrete, o.continuous, o.n_continuous, dt, mask, n,
+                                      &action);
+    }
     if (r != VERVE_OK) return lv_fail_indexed(L, "update", r);
     lua_pushinteger(L, (lua_Integer)action + 1);
     return 1;
@@ -401,6 +427,46 @@ static int lv_end_episode(lua_State* L) {
     verve_result r = verve_agent_end_episode(a, lv_to_float(luaL_checknumber(L, 2)));
     if (r != VERVE_OK) return lv_fail(L, "end_episode", r);
     return 0;
+}
+
+static int lv_truncate_episode(lua_State* L) {
+    verve_agent* a = lv_open_agent(L);
+    verve_result r = verve_agent_truncate_episode(a, lv_to_float(luaL_checknumber(L, 2)));
+    if (r != VERVE_OK) return lv_fail(L, "truncate_episode", r);
+    return 0;
+}
+
+static int lv_set_action_selection(lua_State* L) {
+    verve_agent* a = lv_open_agent(L);
+    verve_result r = verve_agent_set_action_selection(a, (uint32_t)luaL_checkoption(L, 2, NULL, lv_selection_names));
+    if (r != VERVE_OK) return lv_fail(L, "set_action_selection", r);
+    return 0;
+}
+
+static int lv_action_selection(lua_State* L) {
+    uint32_t mode = 0;
+    verve_result r = verve_agent_get_action_selection(lv_open_agent(L), &mode);
+    if (r != VERVE_OK) return lv_fail(L, "action_selection", r);
+    lua_pushstring(L, lv_selection_names[mode]);
+    return 1;
+}
+
+static int lv_action_probabilities(lua_State* L) {
+    verve_agent* a = lv_open_agent(L);
+    verve_agent_desc d;
+    float p[LV_MAX_ACTIONS];
+    uint32_t i;
+    verve_result r;
+    verve_agent_desc_default(&d);
+    r = verve_agent_get_desc(a, &d);
+    if (r == VERVE_OK) r = verve_agent_get_action_probabilities(a, p, d.num_actions);
+    if (r != VERVE_OK) return lv_fail(L, "action_probabilities", r);
+    lua_createtable(L, (int)d.num_actions, 0);
+    for (i = 0; i < d.num_actions; ++i) {
+        lua_pushnumber(L, (lua_Number)p[i]);
+        lua_rawseti(L, -2, (int)i + 1);
+    }
+    return 1;
 }
 
 static int lv_reset_short_term_memory(lua_State* L) {
@@ -622,6 +688,10 @@ static int lv_tostring(lua_State* L) {
 static const luaL_Reg lv_agent_methods[] = {
     {"update", lv_update},
     {"end_episode", lv_end_episode},
+    {"truncate_episode", lv_truncate_episode},
+    {"set_action_selection", lv_set_action_selection},
+    {"action_selection", lv_action_selection},
+    {"action_probabilities", lv_action_probabilities},
     {"reset_short_term_memory", lv_reset_short_term_memory},
     {"set_learning", lv_set_learning},
     {"learning", lv_learning},

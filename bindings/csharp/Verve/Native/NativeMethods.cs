@@ -36,7 +36,25 @@ namespace Verve.Native
             int* discrete, uint nDiscrete, float* continuous, uint nContinuous, float dt, out uint action);
 
         [DllImport(Library, CallingConvention = CallingConvention.Cdecl)]
+        internal static extern ResultCode verve_agent_update_masked(AgentHandle agent, float reward,
+            int* discrete, uint nDiscrete, float* continuous, uint nContinuous, float dt,
+            byte* actionMask, uint nActions, out uint action);
+
+        [DllImport(Library, CallingConvention = CallingConvention.Cdecl)]
         internal static extern ResultCode verve_agent_end_episode(AgentHandle agent, float finalReward);
+
+        [DllImport(Library, CallingConvention = CallingConvention.Cdecl)]
+        internal static extern ResultCode verve_agent_truncate_episode(AgentHandle agent, float reward);
+
+        [DllImport(Library, CallingConvention = CallingConvention.Cdecl)]
+        internal static extern ResultCode verve_agent_set_action_selection(AgentHandle agent, uint mode);
+
+        [DllImport(Library, CallingConvention = CallingConvention.Cdecl)]
+        internal static extern ResultCode verve_agent_get_action_selection(AgentHandle agent, out uint mode);
+
+        [DllImport(Library, CallingConvention = CallingConvention.Cdecl)]
+        internal static extern ResultCode verve_agent_get_action_probabilities(AgentHandle agent, float* probabilities,
+            uint count);
 
         [DllImport(Library, CallingConvention = CallingConvention.Cdecl)]
         internal static extern ResultCode verve_agent_reset_short_term_memory(AgentHandle agent);

@@ -38,6 +38,9 @@ namespace Verve.Native
         public uint planning_accumulates_uncertainty;
         public uint learn_from_real_steps;
         public uint discrete_prediction;
+        public uint reserved_v2;
+
+        public float policy_weight_bound;
     }
 
     [StructLayout(LayoutKind.Sequential)]

@@ -1,0 +1,166 @@
+// Truncation, greedy play, action probabilities, action masks and the actor weight bound.
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <cmath>
+#include <functional>
+#include <limits>
+#include <numeric>
+#include <vector>
+
+#include "verve/agent.hpp"
+
+using namespace verve;
+
+namespace {
+
+AgentDescriptor discreteAgent(std::uint32_t actions) {
+    AgentDescriptor d;
+    d.addDiscreteSensor(2);
+    d.numActions = actions;
+    d.policyMultiplier = 1.0f;
+    return d;
+}
+
+Observation cue(std::int32_t v) {
+    Observation o;
+    o.discrete = {v};
+    return o;
+}
+
+void expectRefused(const std::function<void()>& call) {
+    try {
+        call();
+        ADD_FAILURE() << "accepted bad input";
+    } catch (const Error& e) {
+        EXPECT_EQ(e.code(), ErrorCode::InvalidArgument);
+        EXPECT_GT(std::string(e.what()).size(), 10u);
+    }
+}
+
+// Teaches state 0 to prefer action `best` (reward 1 for it, -1 for the others), `trials` times.
+void teach(Agent& agent, std::uint32_t best, int trials) {
+    for (int t = 0; t < trials; ++t) {
+        const std::uint32_t a = agent.update(0.0f, cue(0), 0.1f);
+        agent.endEpisode(a == best ? 1.0f : -1.0f);
+    }
+}
+
+}  // namespace
+
+TEST(Truncation, LearnsTheLastRewardAndBootstrapsFromTheLastState) {
+    Agent agent(discreteAgent(2));
+    agent.update(0.0f, cue(0), 0.1f);
+    agent.update(0.0f, cue(1), 0.1f);
+    agent.endEpisode(1.0f);  // V(s1) > 0 now
+    agent.update(0.0f, cue(1), 0.1f);
+    const float v = agent.valueEstimate();
+    ASSERT_GT(v, 0.0f);
+    const float gamma = std::exp(-0.1f);
+    agent.truncateEpisode(-0.5f);
+    // Not terminal: delta = r + gamma V(s) - V(s), where endEpisode would give r - V(s).
+    EXPECT_NEAR(agent.tdError(), -0.5f + gamma * v - v, 1e-6f);
+    EXPECT_EQ(agent.stats().liveTraces, 0u);  // the short-term memory is cleared
+    expectRefused([&] { agent.truncateEpisode(std::numeric_limits<float>::quiet_NaN()); });
+}
+
+TEST(Truncation, WithoutAPreviousStepOrLearningLearnsNothing) {
+    Agent agent(discreteAgent(2));
+    agent.truncateEpisode(1.0f);
+    agent.update(0.0f, cue(0), 0.1f);
+    agent.setLearning(false);
+    agent.update(0.0f, cue(0), 0.1f);
+    const AgentSnapshot before = agent.snapshot();
+    agent.truncateEpisode(1.0f);
+    EXPECT_EQ(before.weights, agent.snapshot().weights);
+}
+
+TEST(ActionProbabilities, AreUniformAtFirstAndFollowTheLearnedPreference) {
+    Agent agent(discreteAgent(4));
+    for (float p : agent.actionProbabilities()) EXPECT_FLOAT_EQ(p, 0.25f);
+    teach(agent, 2, 300);
+    agent.update(0.0f, cue(0), 0.1f);
+    const std::vector<float>& p = agent.actionProbabilities();
+    ASSERT_EQ(p.size(), 4u);
+    EXPECT_NEAR(std::accumulate(p.begin(), p.end(), 0.0f), 1.0f, 1e-5f);
+    EXPECT_GT(p[2], 0.9f);
+}
+
+TEST(ActionSelection, GreedyPlaysTheMostProbableActionAndDrawsNoRandomNumber) {
+    Agent agent(discreteAgent(3));
+    EXPECT_EQ(agent.actionSelection(), ActionSelection::Sample);
+    teach(agent, 1, 200);
+    agent.setLearning(false);
+    agent.setActionSelection(ActionSelection::Greedy);
+    const auto rngBefore = agent.snapshot().rng;
+    for (int i = 0; i < 100; ++i) {
+        const std::uint32_t a = agent.update(0.0f, cue(0), 0.1f);
+        const std::vector<float>& p = agent.actionProbabilities();
+        EXPECT_EQ(a, static_cast<std::uint32_t>(std::max_element(p.begin(), p.end()) - p.begin()));
+        EXPECT_EQ(a, 1u);
+    }
+    EXPECT_EQ(agent.snapshot().rng, rngBefore);
+    // An untrained state: all tie, the lowest index wins.
+    EXPECT_EQ(agent.update(0.0f, cue(1), 0.1f), 0u);
+    expectRefused([&] { agent.setActionSelection(static_cast<ActionSelection>(7)); });
+    EXPECT_EQ(agent.actionSelection(), ActionSelection::Greedy);
+}
+
+TEST(ActionMask, MaskedActionsAreNeverChosenAndGetNoCredit) {
+    Agent agent(discreteAgent(4));
+    const std::uint8_t allowed[4] = {0, 1, 0, 1};
+    for (int t = 0; t < 200; ++t) {
+        const std::uint32_t a = agent.update(0.0f, cue(0).view(), 0.1f, ActionMask{allowed, 4});
+        EXPECT_TRUE(a == 1 || a == 3) << a;
+        EXPECT_EQ(agent.actionProbabilities()[0], 0.0f);
+        EXPECT_EQ(agent.actionProbabilities()[2], 0.0f);
+        agent.endEpisode(1.0f);
+    }
+    const AgentSnapshot s = agent.snapshot();
+    EXPECT_EQ(s.weights[1 + 0], 0.0f);  // state 0's actor weights of the masked actions
+    EXPECT_EQ(s.weights[1 + 2], 0.0f);
+    EXPECT_GT(s.weights[1 + 1] + s.weights[1 + 3], 0.0f);
+}
+
+TEST(ActionMask, BadMasksAreRefusedAndChangeNothing) {
+    Agent agent(discreteAgent(3));
+    teach(agent, 0, 20);
+    agent.update(0.0f, cue(0), 0.1f);
+    const AgentSnapshot before = agent.snapshot();
+    const std::uint8_t none[3] = {0, 0, 0};
+    const std::uint8_t two[3] = {1, 2, 0};
+    const std::uint8_t ok[3] = {1, 1, 1};
+    expectRefused([&] { agent.update(0.0f, cue(0).view(), 0.1f, ActionMask{none, 3}); });
+    expectRefused([&] { agent.update(0.0f, cue(0).view(), 0.1f, ActionMask{two, 3}); });
+    expectRefused([&] { agent.update(0.0f, cue(0).view(), 0.1f, ActionMask{ok, 2}); });
+    expectRefused([&] { agent.update(0.0f, cue(0).view(), 0.1f, ActionMask{nullptr, 3}); });
+    const AgentSnapshot after = agent.snapshot();
+    EXPECT_EQ(before.weights, after.weights);
+    EXPECT_EQ(before.traces, after.traces);
+    EXPECT_EQ(before.rng, after.rng);
+    EXPECT_EQ(before.steps, after.steps);
+}
+
+TEST(PolicyWeightBound, KeepsEveryActorWeightWithinTheBound) {
+    AgentDescriptor d = discreteAgent(3);
+    d.policyMultiplier = 50.0f;
+    d.policyWeightBound = 4.0f;
+    Agent agent(d);
+    teach(agent, 1, 300);
+    const AgentSnapshot s = agent.snapshot();
+    float largest = 0.0f;
+    for (std::size_t f = 0; f < s.weights.size() / s.stride; ++f) {
+        for (std::uint32_t a = 0; a < 3; ++a) largest = std::max(largest, std::abs(s.weights[f * s.stride + 1 + a]));
+    }
+    EXPECT_FLOAT_EQ(largest, 4.0f);  // reached, never passed
+
+    d.policyWeightBound = 0.0f;  // unbounded: the same lessons go further
+    Agent free(d);
+    teach(free, 1, 300);
+    EXPECT_GT(free.snapshot().weights[1 + 1], 4.0f);
+
+    for (float bad : {-1.0f, std::numeric_limits<float>::quiet_NaN(), std::numeric_limits<float>::infinity()}) {
+        d.policyWeightBound = bad;
+        expectRefused([&] { Agent refused(d); });
+    }
+}

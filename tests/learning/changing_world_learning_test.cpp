@@ -1,0 +1,78 @@
+// A world whose rules change after the agent has learned them (docs/experiments.md, "A changing
+// world"): the agent must notice and relearn. Thresholds come from measurements over these seeds.
+#include <gtest/gtest.h>
+
+#include <algorithm>
+
+#include "learning_window.hpp"
+#include "tasks/cue_change.hpp"
+
+using namespace verve::tasks;
+using namespace verve::tasks::testing;
+
+namespace {
+
+constexpr std::uint32_t kChange = 1000;  // CueChangeConfig::changeTrial
+
+// One run per seed, so every seed can be held to the bar, not only the mean.
+std::vector<LearningCurve> cueRuns(const DescriptorOverride& overrides) {
+    std::vector<LearningCurve> runs;
+    for (std::uint64_t seed = kSeed; seed < kSeed + 12; ++seed) {
+        runs.push_back(runExperiment([](std::uint64_t s) { return std::make_unique<CueChange>(s); }, 1, 2000, seed,
+                                     overrides, 1));
+    }
+    return runs;
+}
+
+}  // namespace
+
+TEST(ChangingWorldLearning, CueToActionIsRelearnedAfterHalfTheCuesChange) {
+    const std::vector<LearningCurve> runs = cueRuns({});
+    const double n = static_cast<double>(runs.size());
+    double within250 = 0.0, first = 0.0, worst500 = 1.0;
+    for (const LearningCurve& c : runs) {
+        within250 += windowOf(c, kChange + 150, kChange + 250).success / n;
+        worst500 = std::min(worst500, windowOf(c, kChange + 400, kChange + 500).success);
+        first += windowOf(c, 100, 300).success / n;
+    }
+    // Today's defaults (no bound, tau_value 0.1 s, policy multiplier 5) on the same seeds.
+    double firstBefore = 0.0, within250Before = 0.0;
+    for (const LearningCurve& c : cueRuns([](verve::AgentDescriptor& d) {
+             d.policyWeightBound = 0.0f;
+             d.tauValue = 0.1f;
+             d.policyMultiplier = 5.0f;
+         })) {
+        firstBefore += windowOf(c, 100, 300).success / n;
+        within250Before += windowOf(c, kChange + 150, kChange + 250).success / n;
+    }
+    std::printf("[ measured ] cue-change, 12 seeds: correct on trials 150-249 after the change %.3f (defaults %.3f); "
+                "worst seed on 400-499 %.3f; first mapping, trials 100-299: %.3f (defaults %.3f)\n",
+                within250, within250Before, worst500, first, firstBefore);
+    EXPECT_GE(within250, 0.90);
+    EXPECT_GE(worst500, 0.80);
+    EXPECT_GE(first, firstBefore);  // the first mapping is learned no slower than with the defaults
+}
+
+TEST(ChangingWorldLearning, MazeGoalThatMovesIsFoundAgain) {
+    // Maze #1's goal moves from (7, 1) to (0, 9) at trial 50 (optimum 22, then 9).
+    const LearningCurve c = learn("maze1-moving-goal", 20, 100);
+    const Window before = windowOf(c, 40, 50), soon = windowOf(c, 60, 70), late = windowOf(c, 90, 100);
+    print("maze1-moving-goal trials 40-49", before);
+    print("maze1-moving-goal trials 60-69", soon);
+    print("maze1-moving-goal trials 90-99", late);
+    EXPECT_DOUBLE_EQ(windowOf(c, 60, 100).success, 1.0);  // from trial 60 on, every run finds the new goal every time
+    EXPECT_LE(soon.steps, 60.0);
+    EXPECT_LE(late.excess(), 12.0);
+}
+
+TEST(ChangingWorldLearning, HotPlateWhoseSafeEndSwapsIsRelearned) {
+    // Left end safe until trial 100, then only the right end.
+    const LearningCurve c = learn("swapping-hot-plate-1d", 100, 200);
+    const Window before = windowOf(c, 90, 100), soon = windowOf(c, 120, 130), late = windowOf(c, 150, 200);
+    print("swapping-hot-plate-1d trials 90-99", before);
+    print("swapping-hot-plate-1d trials 120-129", soon);
+    print("swapping-hot-plate-1d trials 150-199", late);
+    EXPECT_LE(soon.excess(), 8.0);
+    EXPECT_LE(late.excess(), 0.5);
+    EXPECT_DOUBLE_EQ(windowOf(c, 150, 200).success, 1.0);
+}
