@@ -16,6 +16,8 @@ packages=(
 # Only for ./scripts/test.sh: each group names what it is for.
 test_packages=(
   dpkg-dev                                     # apt-get source: third-party sources (scripts/fetch_source.sh)
+  mono-devel                                   # C# binding under Mono 6.8, Unity's runtime: mcs, mono, netstandard facade
+  unzip jq                                     # C#: unpacking the NuGet package, checking the Unity package's JSON
 )
 
 if [ "${1:-}" = "--test" ]; then packages+=("${test_packages[@]}"); fi
