@@ -3,7 +3,8 @@
 #   bindings/csharp/test.sh <folder containing libverve.so> [<folder containing verve.dll>]
 # xunit tests (dotnet test), the sample, the NuGet package (both runtimes when verve.dll's folder is
 # given), the packed assembly under Mono 6.8 (Unity's runtime), the VERVE_STATIC_LINK build under
-# Mono, and the Unity package layout. Exits non-zero when a build step or a check fails.
+# Mono, and the Unity package (layout, import settings, its sources compiled alone and run under Mono).
+# Exits non-zero when a build step or a check fails.
 set -euo pipefail
 
 if [[ $# -lt 1 || $# -gt 2 ]]; then
@@ -54,3 +55,7 @@ echo "== VERVE_STATIC_LINK: DllImport(\"__Internal\") under Mono, libverve linke
 dotnet build Verve/Verve.csproj -c Release -p:VerveStaticLink=true -p:IntermediateOutputPath="$work/static/obj/" \
     -p:OutputPath="$work/static/bin/" -v quiet -nologo
 mono/run.sh --static "$work/static/bin/Verve.dll" "$native_dir"
+
+echo "== Unity package"
+unity/make_package.sh "$work/unity" "$native_dir" $windows_dir >/dev/null
+unity/check.sh "$work/unity/com.verve.agent" "$native_dir" $windows_dir
