@@ -16,6 +16,7 @@ packages=(
 # Only for ./scripts/test.sh: each group names what it is for.
 test_packages=(
   dpkg-dev                                     # apt-get source: third-party sources (scripts/fetch_source.sh)
+  clang-14 libclang-rt-14-dev                  # libFuzzer targets (scripts/fuzz.sh)
 )
 
 if [ "${1:-}" = "--test" ]; then packages+=("${test_packages[@]}"); fi
