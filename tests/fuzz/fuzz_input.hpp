@@ -41,11 +41,11 @@ inline verve_agent_desc anyDescriptor(FuzzedDataProvider& in) {
     if (in.ConsumeIntegralInRange<int>(0, 31) == 0) d.struct_size = in.ConsumeIntegral<uint32_t>();
     d.num_discrete_sensors = in.ConsumeIntegralInRange<uint32_t>(0, 3);
     if (in.ConsumeIntegralInRange<int>(0, 31) == 0) d.num_discrete_sensors = anyCount(in, 20);
-    for (uint32_t i = 0; i < VERVE_MAX_DISCRETE_SENSORS; ++i) d.discrete_sensor_values[i] = anyCount(in, 12);
-    d.num_continuous_sensors = in.ConsumeIntegralInRange<uint32_t>(0, 4);
+    for (uint32_t i = 0; i < VERVE_MAX_DISCRETE_SENSORS; ++i) d.discrete_sensor_values[i] = anyCount(in, 6);
+    d.num_continuous_sensors = in.ConsumeIntegralInRange<uint32_t>(0, 3);
     if (in.ConsumeIntegralInRange<int>(0, 31) == 0) d.num_continuous_sensors = anyCount(in, 20);
     for (uint32_t i = 0; i < VERVE_MAX_CONTINUOUS_SENSORS; ++i) d.continuous_sensor_circular[i] = in.ConsumeIntegral<uint8_t>() % 3;
-    d.resolution = anyCount(in, 16);
+    d.resolution = anyCount(in, 10);
     d.num_actions = anyCount(in, 8);
     d.rbf_allocation = in.ConsumeIntegralInRange<uint32_t>(0, 2);
     d.tau_value = anyFloat(in, 0.0f, 2.0f);
