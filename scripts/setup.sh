@@ -18,6 +18,7 @@ test_packages=(
   dpkg-dev                                     # apt-get source: third-party sources (scripts/fetch_source.sh)
   mono-devel                                   # C# binding under Mono 6.8, Unity's runtime: mcs, mono, netstandard facade
   unzip jq                                     # C#: unpacking the NuGet package, checking the Unity package's JSON
+  clang-14 libclang-rt-14-dev                  # libFuzzer targets (scripts/fuzz.sh)
 )
 
 if [ "${1:-}" = "--test" ]; then packages+=("${test_packages[@]}"); fi

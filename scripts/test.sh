@@ -15,6 +15,9 @@ ctest --test-dir build -R '^KnownGap' -j"$(nproc)" || echo "known gaps: some bar
 echo "== C++, C ABI and Lua suites (ctest)"
 ctest --test-dir build --output-on-failure -j"$(nproc)" -E '^KnownGap'
 
+echo "== fuzz targets, 30 s each (docs/fuzzing.md; ./scripts/fuzz.sh 3600 for a real campaign)"
+./scripts/fuzz.sh 30
+
 echo "== C# binding (dotnet test)"
 if ! command -v dotnet >/dev/null 2>&1; then
   echo "test.sh: the .NET SDK (dotnet) is not installed; the C# suite cannot run." >&2
