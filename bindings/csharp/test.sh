@@ -23,6 +23,11 @@ if [[ $# -eq 2 ]]; then
     windows_args=(-p:VerveWindowsNativeDir="$windows_dir")
 fi
 
+for tool in dotnet mcs mono ikdasm unzip jq; do
+    command -v "$tool" >/dev/null ||
+        { echo "error: $tool not found (./scripts/setup.sh --test installs mono-devel, unzip and jq)" >&2; exit 2; }
+done
+
 here=$(cd "$(dirname "${BASH_SOURCE[0]}")" && pwd)
 cd "$here"
 export DOTNET_CLI_TELEMETRY_OPTOUT=1 DOTNET_NOLOGO=1
