@@ -210,12 +210,23 @@ end
 -- The --minutes report: learning shows as more food and less hazard late than early.
 local function report()
   local n = #history
-  local k = math.max(1, math.floor(n / 4))
-  for _, what in ipairs { { "food", "food per NPC-minute", 1, "%.2f" }, { "hazard", "time in hazard %%", 100, "%.1f" } } do
-    local field, name, scale, fmt = what[1], what[2], what[3], what[4]
-    print((name .. ": minutes 1-%d " .. fmt .. ", minutes %d-%d " .. fmt .. ", all %d " .. fmt):format(
-      k, scale * mean(1, k, field), n - k + 1, n, scale * mean(n - k + 1, n, field), n, scale * mean(1, n, field)))
-  end
+  local k = math.max(1, math.floor(n / 4)) -- the first and the last quarter
+  print(("food per NPC-minute: minutes 1-%d %.2f, minutes %d-%d %.2f, all %d %.2f"):format(k,
+    mean(1, k, "food"), n - k + 1, n, mean(n - k + 1, n, "food"), n, mean(1, n, "food")))
+  print(("time in hazard %%: minutes 1-%d %.1f, minutes %d-%d %.1f, all %d %.1f"):format(k,
+    100 * mean(1, k, "hazard"), n - k + 1, n, 100 * mean(n - k + 1, n, "hazard"), n, 100 * mean(1, n, "hazard")))
+end
+
+-- The end of a --minutes run: report, save, and quit (after the screenshot, if one is wanted).
+local function finish_run()
+  report()
+  save_brains()
+  if not options.screenshot then return love.event.quit(0) end
+  love.graphics.captureScreenshot(function(image) -- called once the next frame is drawn
+    image:encode("png", options.screenshot)
+    print("screenshot: " .. love.filesystem.getSaveDirectory() .. "/" .. options.screenshot)
+    love.event.quit(0)
+  end)
 end
 
 function love.load(args)
@@ -242,21 +253,10 @@ end
 
 function love.update(dt)
   if options.minutes then -- flat out: one simulated minute per frame
-    for _ = 1, STEPS_PER_MINUTE do step() end
-    refresh_value_map()
-    if #history >= options.minutes and not options.finished then
-      options.finished = true
-      report()
-      save_brains()
-      if options.screenshot then -- captured at the end of the next drawn frame
-        love.graphics.captureScreenshot(function(image)
-          image:encode("png", options.screenshot)
-          print("screenshot: " .. love.filesystem.getSaveDirectory() .. "/" .. options.screenshot)
-          love.event.quit(0)
-        end)
-      else
-        love.event.quit(0)
-      end
+    if #history < options.minutes then
+      for _ = 1, STEPS_PER_MINUTE do step() end
+      refresh_value_map()
+      if #history == options.minutes then finish_run() end
     end
     return
   end
