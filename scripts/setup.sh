@@ -17,6 +17,7 @@ packages=(
 test_packages=(
   dpkg-dev                                     # apt-get source: third-party sources (scripts/fetch_source.sh)
   love                                         # LÖVE 11: the samples/love game's test (tests/love)
+  clang-14 libclang-rt-14-dev                  # libFuzzer targets (scripts/fuzz.sh)
 )
 
 if [ "${1:-}" = "--test" ]; then packages+=("${test_packages[@]}"); fi

@@ -17,8 +17,11 @@ ctest --preset known-gaps -j"$(nproc)" || echo "known gaps: some bars are still 
 echo "== C++, C ABI, Lua and LÖVE suites (ctest)"
 ctest --preset release -j"$(nproc)"
 
-echo "== the commands README.md and docs/ give (scripts/check_docs.sh, about 2 minutes)"
+echo "== the commands README.md and docs/ give (scripts/check_docs.sh, about 1 minute)"
 ./scripts/check_docs.sh
+
+echo "== fuzz targets, 30 s each (docs/fuzzing.md; ./scripts/fuzz.sh 3600 for a real campaign)"
+./scripts/fuzz.sh 30
 
 echo "== C# binding (dotnet test)"
 if ! command -v dotnet >/dev/null 2>&1; then
