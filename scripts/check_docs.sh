@@ -59,6 +59,7 @@ doc docs/lua.md 'cmake --install build --prefix build/stage'
 doc docs/lua.md 'mkdir -p build/love-npcs'
 doc docs/lua.md 'cp build/stage/lib/lua/5.1/verve.so build/stage/lib/libverve.so.0 build/love-npcs/'
 doc docs/lua.md '(cd samples/love && cmake -E tar cf ../../build/love-npcs/verve-npcs.love --format=zip main.lua conf.lua)'
+doc docs/lua.md 'readelf -d build/src/capi/libverve.so.0'
 in_doc docs/lua.md 'love build/love-npcs/verve-npcs.love '   # the window; the headless run below
 doc docs/lua.md 'love build/love-npcs/verve-npcs.love --headless --minutes 20 --fresh'
 if command -v xvfb-run >/dev/null; then
