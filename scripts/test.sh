@@ -23,7 +23,7 @@ echo "== the commands README.md and docs/ give (scripts/check_docs.sh, about 1 m
 echo "== fuzz targets, 30 s each (docs/fuzzing.md; ./scripts/fuzz.sh 3600 for a real campaign)"
 ./scripts/fuzz.sh 30
 
-echo "== C# binding (dotnet test)"
+echo "== C# binding: xunit, sample, NuGet package, Mono 6.8 (Unity's runtime), Unity package"
 if ! command -v dotnet >/dev/null 2>&1; then
   echo "test.sh: the .NET SDK (dotnet) is not installed; the C# suite cannot run." >&2
   echo "Install the .NET SDK (https://learn.microsoft.com/dotnet/core/install/linux-debian) and rerun." >&2
