@@ -80,6 +80,16 @@ doc docs/experiments.md 'cmake -S . -B build -DCMAKE_BUILD_TYPE=Release && cmake
 doc docs/experiments.md 'build/samples/tasks/verve-experiments list'
 ctest_doc docs/experiments.md 'ctest --test-dir build -L learning'
 
+# C#: the package commands run (dotnet test and the sample are what test.sh's C# step runs next).
+doc docs/csharp.md 'cmake -S . -B build -DCMAKE_BUILD_TYPE=Release'
+doc docs/csharp.md 'cmake --build build -j2 --target verve'
+in_doc docs/csharp.md 'bindings/csharp/test.sh build/src/capi'
+in_doc docs/csharp.md 'dotnet test bindings/csharp/Verve.Tests -p:VerveNativeDir=build/src/capi'
+in_doc docs/csharp.md 'dotnet run --project bindings/csharp/Verve.Sample -p:VerveNativeDir=build/src/capi -- 150 1'
+doc docs/csharp.md 'dotnet pack bindings/csharp/Verve -c Release -p:VerveNativeDir=build/src/capi -o out/nuget'
+doc docs/csharp.md 'bindings/csharp/unity/make_package.sh out/unity build/src/capi'
+doc docs/csharp.md 'dotnet build bindings/csharp/Verve -c Release -p:VerveStaticLink=true -o out/verve-static'
+
 ctest_doc docs/tuning.md "ctest --test-dir build -R '^(love\.|NpcArenaLearning|HotPlateLearning|CartPoleLearning|PendulumLearning|PatrolRecipe)'"
 
 [ "$had_out" = yes ] || rm -rf out
