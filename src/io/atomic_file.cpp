@@ -81,6 +81,18 @@ std::string readWholeFile(const std::string& path) {
 
 namespace platform {
 
+PathParts splitPath(const std::string& path) {
+    const auto slash = path.find_last_of(pathSeparators());
+    if (slash == std::string::npos) return {"", path};
+    return {path.substr(0, slash == 0 ? 1 : slash), path.substr(slash + 1)};
+}
+
+std::string joinPath(const std::string& directory, const std::string& name) {
+    if (directory.empty()) return name;
+    const bool separated = std::string(pathSeparators()).find(directory.back()) != std::string::npos;
+    return separated ? directory + name : directory + pathSeparators()[0] + name;
+}
+
 void refuseNonRegular(const std::string& path) {
     throw Error(ErrorCode::Io, "cannot load '" + path + "': not a regular file (a directory, device or pipe)");
 }

@@ -9,6 +9,10 @@
 
 namespace verve::io::platform {
 
+// The characters that separate folders in a path, the preferred one first: "/" or "\\/".
+const char* pathSeparators();
+
+// Path arithmetic over pathSeparators(), the same for both platforms (atomic_file.cpp).
 struct PathParts {
     std::string directory;  // "" for the current directory
     std::string name;

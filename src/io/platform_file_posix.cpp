@@ -58,16 +58,7 @@ void syncDirectory(const std::string& directory) {
 
 }  // namespace
 
-PathParts splitPath(const std::string& path) {
-    const auto slash = path.find_last_of('/');
-    if (slash == std::string::npos) return {"", path};
-    return {path.substr(0, slash == 0 ? 1 : slash), path.substr(slash + 1)};
-}
-
-std::string joinPath(const std::string& directory, const std::string& name) {
-    if (directory.empty()) return name;
-    return directory.back() == '/' ? directory + name : directory + "/" + name;
-}
+const char* pathSeparators() { return "/"; }
 
 std::string followLinks(const std::string& path) {
     std::string current = path;

@@ -73,17 +73,7 @@ constexpr DWORD kChunk = 1u << 30;  // ReadFile/WriteFile take a DWORD count
 
 }  // namespace
 
-PathParts splitPath(const std::string& path) {
-    const auto slash = path.find_last_of("/\\");
-    if (slash == std::string::npos) return {"", path};
-    return {path.substr(0, slash == 0 ? 1 : slash), path.substr(slash + 1)};
-}
-
-std::string joinPath(const std::string& directory, const std::string& name) {
-    if (directory.empty()) return name;
-    const char last = directory.back();
-    return last == '/' || last == '\\' ? directory + name : directory + "\\" + name;
-}
+const char* pathSeparators() { return "\\/"; }
 
 std::string followLinks(const std::string& path) { return path; }
 

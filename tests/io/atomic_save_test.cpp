@@ -10,9 +10,7 @@
 
 #include <chrono>
 #include <filesystem>
-#include <fstream>
 #include <random>
-#include <sstream>
 #include <thread>
 
 #include "io/atomic_file.hpp"
@@ -26,13 +24,7 @@ namespace verve {
 namespace {
 
 using AtomicSave = iotest::SaveDir;
-
-std::string fileBytes(const fs::path& path) {
-    std::ifstream in(path, std::ios::binary);
-    std::ostringstream out;
-    out << in.rdbuf();
-    return out.str();
-}
+using iotest::fileBytes;
 
 // A big agent: the full lattice of 3 sensors at resolution 40 (64,000 RBFs), about 8 MB of XML.
 Agent bigAgent(std::uint64_t feedSeed) {

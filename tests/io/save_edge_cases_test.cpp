@@ -12,7 +12,6 @@
 #include <filesystem>
 #include <fstream>
 #include <random>
-#include <sstream>
 
 #include "io/atomic_file.hpp"
 #include "io_test_support.hpp"
@@ -25,13 +24,7 @@ namespace verve {
 namespace {
 
 using SaveEdgeCases = iotest::SaveDir;
-
-std::string fileBytes(const fs::path& path) {
-    std::ifstream in(path, std::ios::binary);
-    std::ostringstream out;
-    out << in.rdbuf();
-    return out.str();
-}
+using iotest::fileBytes;
 
 Agent smallAgent() { return iotest::trainedAgent(iotest::mixedDescriptor(1), 50); }
 
