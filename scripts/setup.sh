@@ -18,6 +18,7 @@ packages=(
 test_packages=(
   dpkg-dev                                     # apt-get source: third-party sources (scripts/fetch_source.sh)
   g++-mingw-w64-x86-64-posix wine64            # verve.dll cross-built for Windows x64, tested under Wine
+  clang-14 libclang-rt-14-dev                  # libFuzzer targets (scripts/fuzz.sh)
 )
 
 if [ "${1:-}" = "--test" ]; then packages+=("${test_packages[@]}"); fi

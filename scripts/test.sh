@@ -16,6 +16,9 @@ ctest --test-dir build -R '^KnownGap' -j"$(nproc)" || echo "known gaps: some bar
 echo "== C++, C ABI and Lua suites (ctest)"
 ctest --test-dir build --output-on-failure -j"$(nproc)" -E '^KnownGap'
 
+echo "== fuzz targets, 30 s each (docs/fuzzing.md; ./scripts/fuzz.sh 3600 for a real campaign)"
+./scripts/fuzz.sh 30
+
 echo "== Windows x64: verve.dll cross-built with MinGW-w64, the C ABI suites run under Wine"
 # About 2-3 min on 2 cores from scratch (the first Wine run creates build/mingw/wine-prefix: ~25 s).
 windows_start=$SECONDS
