@@ -69,6 +69,7 @@ std::string followLinks(const std::string& path) {
         const ssize_t n = ::readlink(current.c_str(), &target[0], target.size());
         if (n < 0) fail("cannot read the link", current, errno);
         target.resize(static_cast<std::size_t>(n));
+        if (target.empty()) return current;
         current = target.front() == '/' ? target : joinPath(splitPath(current).directory, target);
     }
     fail("cannot follow the links of", path, ELOOP);
