@@ -18,6 +18,9 @@ packages=(
 test_packages=(
   dpkg-dev                                     # apt-get source: third-party sources (scripts/fetch_source.sh)
   g++-mingw-w64-x86-64-posix wine64            # verve.dll cross-built for Windows x64, tested under Wine
+  love                                         # LÖVE 11: the samples/love game's test (tests/love)
+  mono-devel                                   # C# binding under Mono 6.8, Unity's runtime: mcs, mono, netstandard facade
+  unzip jq                                     # C#: unpacking the NuGet package, checking the Unity package's JSON
   clang-14 libclang-rt-14-dev                  # libFuzzer targets (scripts/fuzz.sh)
 )
 
