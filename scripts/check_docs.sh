@@ -92,6 +92,13 @@ doc docs/csharp.md 'dotnet build bindings/csharp/Verve -c Release -p:VerveStatic
 
 ctest_doc docs/tuning.md "ctest --test-dir build -R '^(love\.|NpcArenaLearning|HotPlateLearning|CartPoleLearning|PendulumLearning|PatrolRecipe)'"
 
+# What the shipped library needs; the Windows cross build's commands run in test.sh right after this.
+doc docs/platforms.md 'readelf -d build/src/capi/libverve.so | grep NEEDED'
+doc docs/platforms.md "objdump -T build/src/capi/libverve.so | grep -o 'GLIBC_[0-9.]*' | sort -uV | tail -1"
+in_doc docs/platforms.md 'cmake --preset mingw-release'
+in_doc docs/platforms.md 'cmake --build --preset mingw-release'
+in_doc docs/platforms.md 'ctest --preset mingw-release'
+
 [ "$had_out" = yes ] || rm -rf out
 if [ "$failures" -gt 0 ]; then
   echo "check_docs: $failures documented command(s) failed or are no longer documented" >&2
