@@ -10,19 +10,11 @@
 #include <unordered_map>
 #include <vector>
 
+#include "core/active_feature.hpp"
+#include "core/kernels.hpp"
 #include "verve/agent_descriptor.hpp"
 
 namespace verve::core {
-
-struct ActiveFeature {
-    // Deliberately leaves its fields uninitialised: the activation scan resizes its output to
-    // every candidate, then overwrites them, and value-initialising would cost a pass of its own.
-    ActiveFeature() noexcept {}  // NOLINT(cppcoreguidelines-pro-type-member-init)
-    ActiveFeature(std::uint32_t i, float a) noexcept : index(i), activation(a) {}
-
-    std::uint32_t index;
-    float activation;  // in (0, 1]
-};
 
 class StateRepresentation {
 public:
@@ -50,27 +42,26 @@ public:
     std::uint32_t addFeature(std::uint64_t key, const float* centre);
 
 private:
-    // A cell keeps copies of its RBFs' centres next to their indices, in blocks of kLanes RBFs
+    // A cell keeps copies of its RBFs' centres next to their indices, in blocks of kScanLanes RBFs
     // stored dimension by dimension ([block][dimension][lane]): the distance loop then runs
-    // across kLanes RBFs at once in SIMD registers.
-    static constexpr std::uint32_t kLanes = 8;
+    // across kScanLanes RBFs at once in SIMD registers.
     struct Cell {
         std::vector<std::uint32_t> features;
-        std::vector<float> centres;  // blocks of numContinuous_ * kLanes floats
+        std::vector<float> centres;  // blocks of numContinuous_ * kScanLanes floats
     };
     struct Array {
         std::unordered_map<std::uint64_t, Cell> cells;
     };
 
     // Appends the RBFs of one cell within the cutoff; returns whether one lies within a width.
-    bool scanCell(const Cell& c, const float* continuous, std::vector<ActiveFeature>& out) const;
+    bool scanCell(const Cell& c, const ScanParams& params, std::vector<ActiveFeature>& out) const;
     std::uint64_t discreteKey(const std::int32_t* discrete) const;
     void cellCoords(const float* point, std::int32_t* coords) const;
     std::uint64_t cellHash(const std::int32_t* coords) const;
     void allocateFullLattice();
 
     std::vector<std::uint32_t> discreteCounts_;
-    std::vector<bool> circular_;
+    std::vector<std::uint8_t> circular_;
     std::uint32_t numContinuous_;
     std::uint32_t resolution_;
     float sigma_;
@@ -78,6 +69,7 @@ private:
     float cellSize_;
     std::uint64_t keyCount_;
     float activationSum_;
+    const Kernels* kernels_;  // chosen for this CPU (kernels.hpp)
 
     std::unordered_map<std::uint64_t, Array> arrays_;
     std::vector<std::uint64_t> keys_;  // per feature: its discrete combination

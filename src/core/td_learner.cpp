@@ -6,24 +6,21 @@
 namespace verve::core {
 
 TdLearner::TdLearner(std::uint32_t numActions, float traceThreshold)
-    : numActions_(numActions), stride_(1 + numActions), threshold_(traceThreshold) {}
+    : numActions_(numActions), stride_(1 + numActions), threshold_(traceThreshold), kernels_(&kernels()) {}
 
 float TdLearner::value(const WeightTable& w, const std::vector<ActiveFeature>& phi) const {
     float v = 0.0f;
-    for (const auto& f : phi) v += w.row(f.index)[WeightLayout::kValue] * f.activation;
+    kernels_->rowSums(w.data().data(), w.stride(), phi.data(), phi.size(), 1, &v);
     return v;
 }
 
 std::uint32_t TdLearner::chooseAction(const WeightTable& w, const std::vector<ActiveFeature>& phi, Rng& rng,
                                       std::vector<float>& activations, float& value) const {
-    activations.assign(numActions_, 0.0f);
-    float v = 0.0f;
-    for (const auto& f : phi) {
-        const float* row = w.row(f.index);
-        v += row[WeightLayout::kValue] * f.activation;
-        for (std::uint32_t a = 0; a < numActions_; ++a) activations[a] += row[WeightLayout::kPolicy + a] * f.activation;
-    }
-    value = v;
+    // One pass over a row's first columns, [value, policy[A]]; then the value leaves the front.
+    activations.resize(stride_);
+    kernels_->rowSums(w.data().data(), w.stride(), phi.data(), phi.size(), stride_, activations.data());
+    value = activations[WeightLayout::kValue];
+    activations.erase(activations.begin());
     float total = 0.0f;
     for (auto& y : activations) {
         y = 1.0f / (1.0f + std::exp(-y));
@@ -47,23 +44,13 @@ void TdLearner::trainAndDecay(WeightTable& w, float delta, TdRates rates, float 
     // A trace row [value, policy[A]] lines up with the first 1 + A weights of its feature's row.
     step_.assign(stride_, rates.policy * delta);
     step_[0] = rates.value * delta;
-    std::uint32_t kept = 0;
-    for (std::uint32_t i = 0; i < liveCount_; ++i) {
-        const std::uint32_t feature = live_[i];
-        float* row = w.row(feature);
-        float* e = trace(feature);
-        for (std::uint32_t k = 0; k < stride_; ++k) {
-            row[k] += step_[k] * e[k];
-            e[k] *= decay;
-        }
-        // Branch-free compaction, in order, so results never depend on drop patterns.
-        const bool keep = e[0] >= threshold_;
-        const float scale = keep ? 1.0f : 0.0f;
-        for (std::uint32_t k = 0; k < stride_; ++k) e[k] *= scale;
-        live_[kept] = feature;
-        kept += keep;
-    }
-    liveCount_ = kept;
+    TraceStep s;
+    s.step = step_.data();
+    s.traceStride = stride_;
+    s.weightStride = w.stride();
+    s.decay = decay;
+    s.threshold = threshold_;
+    liveCount_ = kernels_->trainDecay(s, w.data().data(), traces_.data(), live_.data(), liveCount_);
 }
 
 void TdLearner::grow(std::uint32_t featureCount) {

@@ -12,6 +12,7 @@
 #include <limits>
 #include <vector>
 
+#include "core/kernels.hpp"
 #include "core/rng.hpp"
 #include "core/state_representation.hpp"
 #include "core/weight_table.hpp"
@@ -69,6 +70,7 @@ private:
     std::uint32_t liveCount_ = 0;
     std::vector<float> step_;           // eta * delta per trace component (scratch)
     std::vector<ActiveFeature> strong_; // features active enough to mark a trace (scratch)
+    const Kernels* kernels_;            // chosen for this CPU (kernels.hpp)
 };
 
 }  // namespace verve::core
