@@ -7,6 +7,8 @@
 #include <cmath>
 #include <cstdint>
 
+#include "heap_bytes.hpp"
+
 #include "verve/agent.hpp"
 
 namespace {
@@ -23,7 +25,10 @@ void pathPoint(std::uint64_t step, Observation& o) {
     for (std::size_t d = 0; d < o.continuous.size(); ++d) o.continuous[d] = 0.9f * std::sin(t * kFrequency[d] + float(d));
 }
 
-void run(benchmark::State& state, Agent& agent, Observation& o) {
+void run(benchmark::State& state, const AgentDescriptor& d) {
+    const std::size_t heapBefore = heapBytesInUse();
+    Agent agent(d);
+    Observation o(d);
     std::uint64_t step = 0;
     auto next = [&] {
         ++step;
@@ -31,8 +36,11 @@ void run(benchmark::State& state, Agent& agent, Observation& o) {
         agent.update(std::sin(0.065f * static_cast<float>(step)), o, 0.1f);
     };
     for (int i = 0; i < 2000; ++i) next();
+    const std::size_t heap = heapBytesInUse() - heapBefore;
     for (auto _ : state) next();
     state.counters["rbfs"] = static_cast<double>(agent.rbfCount());
+    // Heap per RBF, allocator overhead and spare capacity included (0 where it cannot be read).
+    state.counters["bytes_per_rbf"] = static_cast<double>(heap) / static_cast<double>(agent.rbfCount());
 }
 
 // A dense 4-D space: the full lattice at resolution 6, 10 or 18 (1,296, 10,000 or 104,976 RBFs).
@@ -42,9 +50,7 @@ void BM_UpdateDense4D(benchmark::State& state) {
     d.resolution = static_cast<std::uint32_t>(state.range(0));
     d.numActions = 3;
     d.allocation = verve::RbfAllocation::Full;
-    Agent agent(d);
-    Observation o(d);
-    run(state, agent, o);
+    run(state, d);
 }
 BENCHMARK(BM_UpdateDense4D)->Arg(6)->Arg(10)->Arg(18);
 
@@ -55,9 +61,7 @@ void BM_UpdateDense2D(benchmark::State& state) {
     d.resolution = static_cast<std::uint32_t>(state.range(0));
     d.numActions = 3;
     d.allocation = verve::RbfAllocation::Full;
-    Agent agent(d);
-    Observation o(d);
-    run(state, agent, o);
+    run(state, d);
 }
 BENCHMARK(BM_UpdateDense2D)->Arg(32)->Arg(100)->Arg(320);
 

@@ -92,89 +92,73 @@ std::size_t scan(const ScanParams& p, const float* centres, const std::uint32_t*
     return n;
 }
 
-float horizontalSum(__m128 v) {
-    v = _mm_add_ps(v, _mm_movehl_ps(v, v));
-    v = _mm_add_ss(v, _mm_movehdup_ps(v));
-    return _mm_cvtss_f32(v);
-}
-
 void rowSums(const float* weights, std::uint32_t stride, const ActiveFeature* phi, std::size_t n,
              std::uint32_t columns, float* sums) {
-    std::uint32_t c = 0;
-    for (; c + 8 <= columns; c += 8) {
-        __m256 a = _mm256_setzero_ps(), b = _mm256_setzero_ps();
-        std::size_t i = 0;
-        for (; i + 2 <= n; i += 2) {
-            a = _mm256_fmadd_ps(_mm256_loadu_ps(weights + std::size_t(phi[i].index) * stride + c),
-                                _mm256_set1_ps(phi[i].activation), a);
-            b = _mm256_fmadd_ps(_mm256_loadu_ps(weights + std::size_t(phi[i + 1].index) * stride + c),
-                                _mm256_set1_ps(phi[i + 1].activation), b);
-        }
-        if (i < n) {
-            a = _mm256_fmadd_ps(_mm256_loadu_ps(weights + std::size_t(phi[i].index) * stride + c),
-                                _mm256_set1_ps(phi[i].activation), a);
-        }
-        _mm256_storeu_ps(sums + c, _mm256_add_ps(a, b));
-    }
-    for (; c + 4 <= columns; c += 4) {  // four accumulators: an FMA's latency is four adds long
-        __m128 acc[4] = {_mm_setzero_ps(), _mm_setzero_ps(), _mm_setzero_ps(), _mm_setzero_ps()};
+    const __m256i laneNumbers = _mm256_setr_epi32(0, 1, 2, 3, 4, 5, 6, 7);
+    for (std::uint32_t c = 0; c < columns; c += 8) {
+        // Up to 8 columns per pass; a masked load never reads past a row's last column.
+        const __m256i mask = _mm256_cmpgt_epi32(_mm256_set1_epi32(static_cast<int>(columns - c)), laneNumbers);
+        const float* base = weights + c;
+        // Four accumulators: an FMA's latency is four adds long.
+        __m256 acc[4] = {_mm256_setzero_ps(), _mm256_setzero_ps(), _mm256_setzero_ps(), _mm256_setzero_ps()};
         std::size_t i = 0;
         for (; i + 4 <= n; i += 4) {
             for (std::size_t j = 0; j < 4; ++j) {
-                acc[j] = _mm_fmadd_ps(_mm_loadu_ps(weights + std::size_t(phi[i + j].index) * stride + c),
-                                      _mm_set1_ps(phi[i + j].activation), acc[j]);
+                const __m256 w = _mm256_maskload_ps(base + std::size_t(phi[i + j].index) * stride, mask);
+                acc[j] = _mm256_fmadd_ps(w, _mm256_set1_ps(phi[i + j].activation), acc[j]);
             }
         }
         for (; i < n; ++i) {
-            acc[0] = _mm_fmadd_ps(_mm_loadu_ps(weights + std::size_t(phi[i].index) * stride + c),
-                                  _mm_set1_ps(phi[i].activation), acc[0]);
+            const __m256 w = _mm256_maskload_ps(base + std::size_t(phi[i].index) * stride, mask);
+            acc[0] = _mm256_fmadd_ps(w, _mm256_set1_ps(phi[i].activation), acc[0]);
         }
-        _mm_storeu_ps(sums + c, _mm_add_ps(_mm_add_ps(acc[0], acc[1]), _mm_add_ps(acc[2], acc[3])));
-    }
-    for (; c < columns; ++c) {  // a single column: gather four features into one register
-        __m128 acc = _mm_setzero_ps();
-        std::size_t i = 0;
-        for (; i + 4 <= n; i += 4) {
-            const __m128 w = _mm_set_ps(weights[std::size_t(phi[i + 3].index) * stride + c],
-                                        weights[std::size_t(phi[i + 2].index) * stride + c],
-                                        weights[std::size_t(phi[i + 1].index) * stride + c],
-                                        weights[std::size_t(phi[i].index) * stride + c]);
-            const __m128 a = _mm_set_ps(phi[i + 3].activation, phi[i + 2].activation, phi[i + 1].activation,
-                                        phi[i].activation);
-            acc = _mm_fmadd_ps(w, a, acc);
-        }
-        float s = horizontalSum(acc);
-        for (; i < n; ++i) s += weights[std::size_t(phi[i].index) * stride + c] * phi[i].activation;
-        sums[c] = s;
+        _mm256_maskstore_ps(sums + c, mask, _mm256_add_ps(_mm256_add_ps(acc[0], acc[1]), _mm256_add_ps(acc[2], acc[3])));
     }
 }
 
-std::uint32_t trainDecay(const TraceStep& s, float* weights, float* traces, std::uint32_t* live, std::uint32_t count) {
-    const __m128 decay = _mm_set1_ps(s.decay);
+// S trace components, known at compile time for the common action counts (0: s.traceStride).
+template <std::uint32_t S>
+std::uint32_t trainDecayRows(const TraceStep& s, float* __restrict weights, float* __restrict traces,
+                             std::uint32_t* __restrict live, std::uint32_t count) {
+    const std::uint32_t stride = S != 0 ? S : s.traceStride;
+    const std::size_t weightStride = s.weightStride;
+    const float* __restrict step = s.step;
+    const float decay = s.decay, threshold = s.threshold;
     std::uint32_t kept = 0;
     for (std::uint32_t i = 0; i < count; ++i) {
         const std::uint32_t feature = live[i];
-        float* w = weights + std::size_t(feature) * s.weightStride;
-        float* e = traces + std::size_t(feature) * s.traceStride;
+        float* __restrict w = weights + feature * weightStride;
+        float* __restrict e = traces + std::size_t(feature) * stride;
+        // The value component decides whether the trace stays live; a dropped one is zeroed,
+        // branch-free, and the live list is compacted in order.
+        const bool keep = e[0] * decay >= threshold;
+        const float scaled = keep ? decay : 0.0f;
+        const __m128 decay4 = _mm_set1_ps(scaled);
         std::uint32_t k = 0;
-        for (; k + 4 <= s.traceStride; k += 4) {
+        for (; k + 4 <= stride; k += 4) {
             const __m128 ek = _mm_loadu_ps(e + k);
-            _mm_storeu_ps(w + k, _mm_fmadd_ps(_mm_loadu_ps(s.step + k), ek, _mm_loadu_ps(w + k)));
-            _mm_storeu_ps(e + k, _mm_mul_ps(ek, decay));
+            _mm_storeu_ps(w + k, _mm_fmadd_ps(_mm_loadu_ps(step + k), ek, _mm_loadu_ps(w + k)));
+            _mm_storeu_ps(e + k, _mm_mul_ps(ek, decay4));
         }
-        for (; k < s.traceStride; ++k) {
-            w[k] += s.step[k] * e[k];
-            e[k] *= s.decay;
-        }
-        // In order, without branching on the drop: results never depend on drop patterns.
-        const bool keep = e[0] >= s.threshold;
-        if (!keep) {
-            for (k = 0; k < s.traceStride; ++k) e[k] = 0.0f;
+        for (; k < stride; ++k) {
+            w[k] += step[k] * e[k];
+            e[k] *= scaled;
         }
         live[kept] = feature;
         kept += keep;
     }
     return kept;
+}
+
+std::uint32_t trainDecay(const TraceStep& s, float* weights, float* traces, std::uint32_t* live, std::uint32_t count) {
+    switch (s.traceStride) {  // 1 + actions
+        case 3: return trainDecayRows<3>(s, weights, traces, live, count);
+        case 4: return trainDecayRows<4>(s, weights, traces, live, count);
+        case 5: return trainDecayRows<5>(s, weights, traces, live, count);
+        case 6: return trainDecayRows<6>(s, weights, traces, live, count);
+        case 9: return trainDecayRows<9>(s, weights, traces, live, count);
+        default: return trainDecayRows<0>(s, weights, traces, live, count);
+    }
 }
 
 }  // namespace

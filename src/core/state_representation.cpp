@@ -64,9 +64,7 @@ std::uint64_t StateRepresentation::cellHash(const std::int32_t* coords) const {
 }
 
 std::uint32_t StateRepresentation::addFeature(std::uint64_t key, const float* centre) {
-    const auto index = static_cast<std::uint32_t>(keys_.size());
-    keys_.push_back(key);
-    centres_.insert(centres_.end(), centre, centre + numContinuous_);
+    const std::uint32_t index = featureCount_++;
     cellCoords(centre, coords_.data());
     Cell& cell = arrays_[key].cells[cellHash(coords_.data())];
     const std::size_t lane = cell.features.size() % kScanLanes;
@@ -75,6 +73,24 @@ std::uint32_t StateRepresentation::addFeature(std::uint64_t key, const float* ce
     for (std::uint32_t d = 0; d < numContinuous_; ++d) block[d * kScanLanes + lane] = centre[d];
     cell.features.push_back(index);
     return index;
+}
+
+void StateRepresentation::features(std::vector<std::uint64_t>& keys, std::vector<float>& centres) const {
+    keys.assign(featureCount_, 0);
+    centres.assign(std::size_t(featureCount_) * numContinuous_, 0.0f);
+    for (const auto& [key, array] : arrays_) {
+        for (const auto& entry : array.cells) {
+            const Cell& cell = entry.second;
+            for (std::size_t i = 0; i < cell.features.size(); ++i) {
+                const std::uint32_t f = cell.features[i];
+                keys[f] = key;
+                const float* block = cell.centres.data() + (i / kScanLanes) * numContinuous_ * kScanLanes;
+                for (std::uint32_t d = 0; d < numContinuous_; ++d) {
+                    centres[std::size_t(f) * numContinuous_ + d] = block[d * kScanLanes + i % kScanLanes];
+                }
+            }
+        }
+    }
 }
 
 void StateRepresentation::allocateFullLattice() {
@@ -99,6 +115,13 @@ void StateRepresentation::allocateFullLattice() {
                 if (++index[d] < resolution_) break;
                 index[d] = 0;
             }
+        }
+    }
+    // The lattice is complete: no cell grows again, so none keeps spare capacity.
+    for (auto& [key, array] : arrays_) {
+        for (auto& entry : array.cells) {
+            entry.second.features.shrink_to_fit();
+            entry.second.centres.shrink_to_fit();
         }
     }
 }

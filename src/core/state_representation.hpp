@@ -28,11 +28,12 @@ public:
     // The same without allocating; returns whether some RBF lies within one width.
     bool find(const std::int32_t* discrete, const float* continuous, std::vector<ActiveFeature>& out) const;
 
-    std::uint32_t featureCount() const { return static_cast<std::uint32_t>(keys_.size()); }
+    std::uint32_t featureCount() const { return featureCount_; }
     std::uint32_t numContinuous() const { return numContinuous_; }
     std::uint64_t keyCount() const { return keyCount_; }
-    std::uint64_t featureKey(std::uint32_t feature) const { return keys_[feature]; }
-    const float* centre(std::uint32_t feature) const { return centres_.data() + std::size_t(feature) * numContinuous_; }
+    // Every feature's discrete key and centre (numContinuous values), by feature index. Not for
+    // the hot path: the grid cells hold the only copy of a centre, so this walks all of them.
+    void features(std::vector<std::uint64_t>& keys, std::vector<float>& centres) const;
 
     // Divides the learning rates: the expected activation sum of a lattice of RBFs,
     // sqrt(2 pi) ~ 2.5 per continuous dimension, and 1 when all sensors are discrete.
@@ -72,8 +73,7 @@ private:
     const Kernels* kernels_;  // chosen for this CPU (kernels.hpp)
 
     std::unordered_map<std::uint64_t, Array> arrays_;
-    std::vector<std::uint64_t> keys_;  // per feature: its discrete combination
-    std::vector<float> centres_;       // per feature: numContinuous_ values
+    std::uint32_t featureCount_ = 0;
 
     // Scratch for neighbour enumeration (no allocation once warmed up). Mutable: lookups are
     // logically const, and one agent is used by one thread at a time.

@@ -54,10 +54,12 @@ void TdLearner::trainAndDecay(WeightTable& w, float delta, TdRates rates, float 
 }
 
 void TdLearner::grow(std::uint32_t featureCount) {
-    // One spare live slot: mark() writes a candidate entry before it knows whether it is new.
-    if (live_.size() > featureCount) return;
-    traces_.resize(std::size_t(featureCount) * stride_, 0.0f);
-    live_.resize(std::size_t(featureCount) + 1);
+    if (traces_.size() < std::size_t(featureCount) * stride_) traces_.resize(std::size_t(featureCount) * stride_, 0.0f);
+}
+
+void TdLearner::reserveLive(std::size_t more) {
+    // One spare slot: mark() writes a candidate entry before it knows whether it is new.
+    if (live_.size() < liveCount_ + more + 1) live_.resize(liveCount_ + more + 1);
 }
 
 void TdLearner::mark(const std::vector<ActiveFeature>& phi, std::uint32_t action, std::uint32_t featureCount) {
@@ -71,6 +73,7 @@ void TdLearner::mark(const std::vector<ActiveFeature>& phi, std::uint32_t action
         strong_[n] = f;
         n += f.activation >= threshold_;
     }
+    reserveLive(n);
     for (std::size_t i = 0; i < n; ++i) {
         const ActiveFeature& f = strong_[i];
         float* e = trace(f.index);
@@ -104,6 +107,7 @@ void TdLearner::restore(const std::vector<std::uint32_t>& features, const std::v
                         std::uint32_t featureCount) {
     clear();
     grow(featureCount);
+    reserveLive(features.size());
     for (std::size_t i = 0; i < features.size(); ++i) {
         std::copy_n(traces.data() + i * stride_, stride_, trace(features[i]));
         live_[liveCount_++] = features[i];
