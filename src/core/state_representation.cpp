@@ -71,6 +71,12 @@ std::uint32_t StateRepresentation::addFeature(std::uint64_t key, const float* ce
     if (lane == 0) cell.centres.resize(cell.centres.size() + std::size_t(numContinuous_) * kScanLanes, 0.0f);
     float* block = cell.centres.data() + cell.centres.size() - std::size_t(numContinuous_) * kScanLanes;
     for (std::uint32_t d = 0; d < numContinuous_; ++d) block[d * kScanLanes + lane] = centre[d];
+    if (cell.bounds.empty()) cell.bounds.assign(std::size_t(numContinuous_) * 2, 0.0f);
+    for (std::uint32_t d = 0; d < numContinuous_; ++d) {
+        const bool first = cell.features.empty();
+        cell.bounds[2 * d] = first ? centre[d] : std::min(cell.bounds[2 * d], centre[d]);
+        cell.bounds[2 * d + 1] = first ? centre[d] : std::max(cell.bounds[2 * d + 1], centre[d]);
+    }
     cell.features.push_back(index);
     return index;
 }
@@ -133,7 +139,22 @@ std::uint32_t StateRepresentation::activate(const std::int32_t* discrete, const 
     return 1;
 }
 
+float StateRepresentation::boxDistance2(const Cell& c, const float* point) const {
+    float sum = 0.0f;
+    for (std::uint32_t d = 0; d < numContinuous_; ++d) {
+        const float lo = c.bounds[2 * d], hi = c.bounds[2 * d + 1];
+        auto gap = [lo, hi](float x) { return std::max(0.0f, std::max(lo - x, x - hi)); };
+        float g = gap(point[d]);
+        if (circular_[d]) g = std::min(g, std::min(gap(point[d] - 2.0f), gap(point[d] + 2.0f)));
+        sum += g * g;
+    }
+    return sum;
+}
+
 bool StateRepresentation::scanCell(const Cell& c, const ScanParams& params, std::vector<ActiveFeature>& out) const {
+    // The margin keeps an RBF whose distance rounds differently in the scan (a box distance is
+    // never more than any of its centres' distances).
+    if (boxDistance2(c, params.point) > params.cutoff2 * 1.0001f) return false;
     const std::size_t n = out.size();
     const std::size_t count = c.features.size();
     out.resize(n + (count + kScanLanes - 1) / kScanLanes * kScanLanes);  // capacity is reused once warmed up

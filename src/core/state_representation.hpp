@@ -46,9 +46,12 @@ private:
     // A cell keeps copies of its RBFs' centres next to their indices, in blocks of kScanLanes RBFs
     // stored dimension by dimension ([block][dimension][lane]): the distance loop then runs
     // across kScanLanes RBFs at once in SIMD registers.
+    // A cell also keeps the bounding box of its centres: a cell whose box lies beyond the cutoff
+    // is skipped unread (in 4-D most of the 3^4 neighbour cells' RBFs are out of reach).
     struct Cell {
         std::vector<std::uint32_t> features;
         std::vector<float> centres;  // blocks of numContinuous_ * kScanLanes floats
+        std::vector<float> bounds;   // per dimension: lowest, highest centre
     };
     struct Array {
         std::unordered_map<std::uint64_t, Cell> cells;
@@ -56,6 +59,8 @@ private:
 
     // Appends the RBFs of one cell within the cutoff; returns whether one lies within a width.
     bool scanCell(const Cell& c, const ScanParams& params, std::vector<ActiveFeature>& out) const;
+    // Squared distance from a point to a cell's bounding box (the shorter way on circular sensors).
+    float boxDistance2(const Cell& c, const float* point) const;
     std::uint64_t discreteKey(const std::int32_t* discrete) const;
     void cellCoords(const float* point, std::int32_t* coords) const;
     std::uint64_t cellHash(const std::int32_t* coords) const;
