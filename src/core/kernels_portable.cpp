@@ -4,6 +4,7 @@
 
 #include <algorithm>
 
+#include "core/kernel_loops.hpp"
 #include "core/kernels.hpp"
 
 namespace verve::core {
@@ -68,54 +69,19 @@ void rowSums(const float* weights, std::uint32_t stride, const ActiveFeature* ph
     for (; c < columns; ++c) sums[c] = columnSum(weights, stride, phi, n, c);
 }
 
-// S trace components, known at compile time for the common action counts (0: s.traceStride).
-template <std::uint32_t S>
-std::uint32_t trainDecayRows(const TraceStep& s, float* __restrict weights, float* __restrict traces,
-                             std::uint32_t* __restrict live, std::uint32_t count) {
-    const std::uint32_t stride = S != 0 ? S : s.traceStride;
-    const std::size_t weightStride = s.weightStride;
-    const float* __restrict step = s.step;
-    const float decay = s.decay, threshold = s.threshold;
-    std::uint32_t kept = 0;
-    for (std::uint32_t i = 0; i < count; ++i) {
-        const std::uint32_t feature = live[i];
-        float* __restrict w = weights + feature * weightStride;
-        float* __restrict e = traces + std::size_t(feature) * stride;
-        // The value component decides whether the trace stays live; a dropped one is zeroed,
-        // branch-free, and the live list is compacted in order.
-        const bool keep = e[0] * decay >= threshold;
-        const float scaled = keep ? decay : 0.0f;
-        std::uint32_t k = 0;
-        for (; k + 4 <= stride; k += 4) {
-            Eigen::Map<Quad> ek(e + k);
-            Eigen::Map<Quad>(w + k) += Eigen::Map<const Quad>(step + k) * ek;
-            ek *= scaled;
-        }
-        for (; k < stride; ++k) {
-            w[k] += step[k] * e[k];
-            e[k] *= scaled;
-        }
-        live[kept] = feature;
-        kept += keep;
+// w += step * e, then e *= scale, for 4 trace components.
+struct Quad4 {
+    static void train(float* w, float* e, const float* step, float scale) {
+        Eigen::Map<Quad> ek(e);
+        Eigen::Map<Quad>(w) += Eigen::Map<const Quad>(step) * ek;
+        ek *= scale;
     }
-    return kept;
-}
-
-std::uint32_t trainDecay(const TraceStep& s, float* weights, float* traces, std::uint32_t* live, std::uint32_t count) {
-    switch (s.traceStride) {  // 1 + actions
-        case 3: return trainDecayRows<3>(s, weights, traces, live, count);
-        case 4: return trainDecayRows<4>(s, weights, traces, live, count);
-        case 5: return trainDecayRows<5>(s, weights, traces, live, count);
-        case 6: return trainDecayRows<6>(s, weights, traces, live, count);
-        case 9: return trainDecayRows<9>(s, weights, traces, live, count);
-        default: return trainDecayRows<0>(s, weights, traces, live, count);
-    }
-}
+};
 
 }  // namespace
 
 const Kernels& portableKernels() {
-    static const Kernels k{"portable", scan, rowSums, trainDecay};
+    static const Kernels k{"portable", scan, rowSums, trainDecay<Quad4>};
     return k;
 }
 
