@@ -6,7 +6,10 @@
 #include <limits>
 #include <vector>
 
+#include "discrete_obs.hpp"
+
 using namespace verve;
+using verve::coretest::discreteObs;
 
 namespace {
 
@@ -19,12 +22,6 @@ AgentDescriptor twoStateAgent() {
     d.tauEligibility = 0.1f;
     d.policyMultiplier = 1.0f;
     return d;
-}
-
-Observation discreteObs(std::int32_t v) {
-    Observation o;
-    o.discrete = {v};
-    return o;
 }
 
 // Drives a 1D continuous agent with a fixed pseudo-random input sequence.

@@ -8,9 +8,11 @@
 #include <numeric>
 #include <vector>
 
+#include "discrete_obs.hpp"
 #include "verve/agent.hpp"
 
 using namespace verve;
+using verve::coretest::discreteObs;
 
 namespace {
 
@@ -20,12 +22,6 @@ AgentDescriptor discreteAgent(std::uint32_t actions) {
     d.numActions = actions;
     d.policyMultiplier = 1.0f;
     return d;
-}
-
-Observation cue(std::int32_t v) {
-    Observation o;
-    o.discrete = {v};
-    return o;
 }
 
 void expectRefused(const std::function<void()>& call) {
@@ -41,7 +37,7 @@ void expectRefused(const std::function<void()>& call) {
 // Teaches state 0 to prefer action `best` (reward 1 for it, -1 for the others), `trials` times.
 void teach(Agent& agent, std::uint32_t best, int trials) {
     for (int t = 0; t < trials; ++t) {
-        const std::uint32_t a = agent.update(0.0f, cue(0), 0.1f);
+        const std::uint32_t a = agent.update(0.0f, discreteObs(0), 0.1f);
         agent.endEpisode(a == best ? 1.0f : -1.0f);
     }
 }
@@ -50,10 +46,10 @@ void teach(Agent& agent, std::uint32_t best, int trials) {
 
 TEST(Truncation, LearnsTheLastRewardAndBootstrapsFromTheLastState) {
     Agent agent(discreteAgent(2));
-    agent.update(0.0f, cue(0), 0.1f);
-    agent.update(0.0f, cue(1), 0.1f);
+    agent.update(0.0f, discreteObs(0), 0.1f);
+    agent.update(0.0f, discreteObs(1), 0.1f);
     agent.endEpisode(1.0f);  // V(s1) > 0 now
-    agent.update(0.0f, cue(1), 0.1f);
+    agent.update(0.0f, discreteObs(1), 0.1f);
     const float v = agent.valueEstimate();
     ASSERT_GT(v, 0.0f);
     const float gamma = std::exp(-0.1f);
@@ -67,9 +63,9 @@ TEST(Truncation, LearnsTheLastRewardAndBootstrapsFromTheLastState) {
 TEST(Truncation, WithoutAPreviousStepOrLearningLearnsNothing) {
     Agent agent(discreteAgent(2));
     agent.truncateEpisode(1.0f);
-    agent.update(0.0f, cue(0), 0.1f);
+    agent.update(0.0f, discreteObs(0), 0.1f);
     agent.setLearning(false);
-    agent.update(0.0f, cue(0), 0.1f);
+    agent.update(0.0f, discreteObs(0), 0.1f);
     const AgentSnapshot before = agent.snapshot();
     agent.truncateEpisode(1.0f);
     EXPECT_EQ(before.weights, agent.snapshot().weights);
@@ -79,7 +75,7 @@ TEST(ActionProbabilities, AreUniformAtFirstAndFollowTheLearnedPreference) {
     Agent agent(discreteAgent(4));
     for (float p : agent.actionProbabilities()) EXPECT_FLOAT_EQ(p, 0.25f);
     teach(agent, 2, 300);
-    agent.update(0.0f, cue(0), 0.1f);
+    agent.update(0.0f, discreteObs(0), 0.1f);
     const std::vector<float>& p = agent.actionProbabilities();
     ASSERT_EQ(p.size(), 4u);
     EXPECT_NEAR(std::accumulate(p.begin(), p.end(), 0.0f), 1.0f, 1e-5f);
@@ -94,14 +90,14 @@ TEST(ActionSelection, GreedyPlaysTheMostProbableActionAndDrawsNoRandomNumber) {
     agent.setActionSelection(ActionSelection::Greedy);
     const auto rngBefore = agent.snapshot().rng;
     for (int i = 0; i < 100; ++i) {
-        const std::uint32_t a = agent.update(0.0f, cue(0), 0.1f);
+        const std::uint32_t a = agent.update(0.0f, discreteObs(0), 0.1f);
         const std::vector<float>& p = agent.actionProbabilities();
         EXPECT_EQ(a, static_cast<std::uint32_t>(std::max_element(p.begin(), p.end()) - p.begin()));
         EXPECT_EQ(a, 1u);
     }
     EXPECT_EQ(agent.snapshot().rng, rngBefore);
     // An untrained state: all tie, the lowest index wins.
-    EXPECT_EQ(agent.update(0.0f, cue(1), 0.1f), 0u);
+    EXPECT_EQ(agent.update(0.0f, discreteObs(1), 0.1f), 0u);
     expectRefused([&] { agent.setActionSelection(static_cast<ActionSelection>(7)); });
     EXPECT_EQ(agent.actionSelection(), ActionSelection::Greedy);
 }
@@ -110,7 +106,7 @@ TEST(ActionMask, MaskedActionsAreNeverChosenAndGetNoCredit) {
     Agent agent(discreteAgent(4));
     const std::uint8_t allowed[4] = {0, 1, 0, 1};
     for (int t = 0; t < 200; ++t) {
-        const std::uint32_t a = agent.update(0.0f, cue(0).view(), 0.1f, ActionMask{allowed, 4});
+        const std::uint32_t a = agent.update(0.0f, discreteObs(0).view(), 0.1f, ActionMask{allowed, 4});
         EXPECT_TRUE(a == 1 || a == 3) << a;
         EXPECT_EQ(agent.actionProbabilities()[0], 0.0f);
         EXPECT_EQ(agent.actionProbabilities()[2], 0.0f);
@@ -125,15 +121,15 @@ TEST(ActionMask, MaskedActionsAreNeverChosenAndGetNoCredit) {
 TEST(ActionMask, BadMasksAreRefusedAndChangeNothing) {
     Agent agent(discreteAgent(3));
     teach(agent, 0, 20);
-    agent.update(0.0f, cue(0), 0.1f);
+    agent.update(0.0f, discreteObs(0), 0.1f);
     const AgentSnapshot before = agent.snapshot();
     const std::uint8_t none[3] = {0, 0, 0};
     const std::uint8_t two[3] = {1, 2, 0};
     const std::uint8_t ok[3] = {1, 1, 1};
-    expectRefused([&] { agent.update(0.0f, cue(0).view(), 0.1f, ActionMask{none, 3}); });
-    expectRefused([&] { agent.update(0.0f, cue(0).view(), 0.1f, ActionMask{two, 3}); });
-    expectRefused([&] { agent.update(0.0f, cue(0).view(), 0.1f, ActionMask{ok, 2}); });
-    expectRefused([&] { agent.update(0.0f, cue(0).view(), 0.1f, ActionMask{nullptr, 3}); });
+    expectRefused([&] { agent.update(0.0f, discreteObs(0).view(), 0.1f, ActionMask{none, 3}); });
+    expectRefused([&] { agent.update(0.0f, discreteObs(0).view(), 0.1f, ActionMask{two, 3}); });
+    expectRefused([&] { agent.update(0.0f, discreteObs(0).view(), 0.1f, ActionMask{ok, 2}); });
+    expectRefused([&] { agent.update(0.0f, discreteObs(0).view(), 0.1f, ActionMask{nullptr, 3}); });
     const AgentSnapshot after = agent.snapshot();
     EXPECT_EQ(before.weights, after.weights);
     EXPECT_EQ(before.traces, after.traces);
