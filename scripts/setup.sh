@@ -16,6 +16,7 @@ packages=(
 # Only for ./scripts/test.sh: each group names what it is for.
 test_packages=(
   dpkg-dev                                     # apt-get source: third-party sources (scripts/fetch_source.sh)
+  godot3-server                                # the Godot plugin's engine tests, headless (bindings/godot)
 )
 
 if [ "${1:-}" = "--test" ]; then packages+=("${test_packages[@]}"); fi
@@ -32,4 +33,10 @@ if [ ${#missing[@]} -gt 0 ]; then
   export DEBIAN_FRONTEND=noninteractive
   "${sudo_cmd[@]}" apt-get -o DPkg::Lock::Timeout=600 update -qq
   "${sudo_cmd[@]}" apt-get -o DPkg::Lock::Timeout=600 install -y -qq --no-install-recommends "${missing[@]}" >/dev/null
+fi
+
+if [ "${1:-}" = "--test" ]; then
+  # The Godot plugin builds against Godot 3.2's GDNative headers, shipped by Debian only as source.
+  "$(dirname "$0")/fetch_source.sh" godot3 "$(dirname "$0")/../third_party" \
+    modules/gdnative/include modules/gdnative/gdnative_api.json
 fi
