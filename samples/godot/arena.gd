@@ -5,6 +5,8 @@
 #   godot3 --path build/godot/sample                     play (Space: 8x speed)
 #   godot3-server --path build/godot/sample --fixed-fps 60 --verve-test
 #                                                        train 10 simulated minutes headless, check
+#   godot3 --path build/godot/sample --fixed-fps 60 --verve-screenshot=arena.png
+#                                                        train 8 minutes, save what the screen shows
 extends Node2D
 
 const VerveAgent = preload("res://addons/verve/verve_agent.gdns")
@@ -173,6 +175,9 @@ func _physics_process(delta):
 		test_progress()
 	else:
 		update()  # redraw
+	for arg in OS.get_cmdline_args():
+		if arg.begins_with("--verve-screenshot="):
+			screenshot_progress(arg.split("=")[1])
 
 
 # +1 for reaching food (it reappears elsewhere), -1 for every step inside the hazard.
@@ -219,6 +224,17 @@ func _draw():
 	draw_texture_rect(heat_map, Rect2(HALF_SIZE - 128, -HALF_SIZE - 74, 128, 64), false)
 
 
+# --verve-screenshot=PATH: trains 8 minutes without drawing (fast), then saves one drawn frame.
+func screenshot_progress(path):
+	var at = 8 * 3600
+	VisualServer.render_loop_enabled = ticks > at - 3
+	if ticks == at:
+		var image = get_viewport().get_texture().get_data()
+		image.flip_y()
+		image.save_png(path)
+		get_tree().quit()
+
+
 # The yellow NPC's learned value V over bearing (x: behind, ahead, behind) and food distance (y),
 # with no hazard in sight: bright where it expects food soon.
 func value_heat_map(agent):
@@ -226,12 +242,17 @@ func value_heat_map(agent):
 	var h = 16
 	var v = agent.sample_values([{"kind": "continuous", "index": 0, "samples": w},
 		{"kind": "continuous", "index": 1, "samples": h}], [CLEAR], [0.0, 0.0])
+	var low = v[0]
+	var high = v[0]
+	for x in v:
+		low = min(low, x)
+		high = max(high, x)
 	var image = Image.new()
 	image.create(w, h, false, Image.FORMAT_RGB8)
 	image.lock()
 	for y in h:
 		for x in w:
-			var t = clamp(v[y * w + x], -1.0, 1.0) * 0.5 + 0.5
+			var t = (v[y * w + x] - low) / max(high - low, 1e-6)  # lowest value dark blue, highest yellow
 			image.set_pixel(x, y, Color(0.1, 0.1, 0.4).linear_interpolate(Color(1.0, 0.9, 0.2), t))
 	image.unlock()
 	var texture = ImageTexture.new()

@@ -1,6 +1,7 @@
 # The VerveAgent binding inside the real engine: every method, the errors a game script can make
 # (each must print a Godot error, return false / -1 / null and change nothing), and persistence.
-#   godot3-server --path build/godot/tests --script res://test_agent.gd    (exit code: failures)
+#   godot3-server --path build/godot/tests --fixed-fps 60 --script res://test_agent.gd
+# (exit code 1 on a failure).
 extends SceneTree
 
 const VerveAgent = preload("res://addons/verve/verve_agent.gdns")
@@ -204,6 +205,43 @@ func test_no_agent():
 	check(closed.create(OPTIONS) and closed.has_agent(), "a closed VerveAgent can create again")
 
 
+# The NPC script of docs/godot.md, in a scene: after 20 s it has decided 200 times and saves on exit.
+var npc
+var frames = 0
+
+
+func start_doc_npc():
+	Directory.new().remove("user://npc.xml")
+	var target = Node2D.new()
+	target.position = Vector2(400, 100)
+	root.add_child(target)
+	npc = KinematicBody2D.new()
+	var shape = CollisionShape2D.new()
+	shape.shape = CircleShape2D.new()
+	npc.add_child(shape)
+	npc.set_script(load("res://npc.gd"))
+	npc.target_path = target.get_path()
+	root.add_child(npc)
+
+
+# SceneTree calls _idle every frame (with --fixed-fps 60: 1/60 s of game time each).
+func _idle(_delta):
+	frames += 1
+	if frames != 20 * 60:
+		return
+	check(npc.agent.get_stats()["steps"] == 200, "the doc's NPC decided 10 times a second")
+	npc.queue_free()  # saves
+	quit()
+
+
+func _finalize():
+	var saved = VerveAgent.new()
+	check(saved.load("user://npc.xml") and saved.get_stats()["steps"] == 200, "the doc's NPC saved its agent")
+	Directory.new().remove("user://npc.xml")
+	print("verve godot binding: %d failures" % failures)
+	OS.exit_code = 0 if failures == 0 else 1
+
+
 func _init():
 	test_options()
 	test_bad_options()
@@ -212,5 +250,4 @@ func _init():
 	test_sample_values()
 	test_persistence()
 	test_no_agent()
-	print("verve godot binding: %d failures" % failures)
-	quit(0 if failures == 0 else 1)
+	start_doc_npc()  # runs frame by frame: _idle, then _finalize
