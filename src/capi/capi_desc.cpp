@@ -114,7 +114,7 @@ AgentDescriptor toDescriptor(const verve_agent_desc& in) {
     out.planningAccumulatesUncertainty = d.planning_accumulates_uncertainty != 0;
     out.learnFromRealSteps = d.learn_from_real_steps != 0;
     out.discretePrediction = static_cast<DiscretePrediction>(d.discrete_prediction);
-    out.validate();
+    out.validate(FieldNaming::CAbi);
     return out;
 }
 

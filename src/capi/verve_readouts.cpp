@@ -22,6 +22,13 @@ verve::ValueAxis toAxis(const verve_value_axis& axis, uint32_t i) {
     return out;
 }
 
+void requireCount(uint32_t count, std::size_t expected, const char* name, const char* what) {
+    if (count != expected) {
+        throw verve::Error(verve::ErrorCode::InvalidArgument, std::string(name) + " is " + std::to_string(count) +
+                                                                  ", the agent has " + std::to_string(expected) + " " + what);
+    }
+}
+
 }  // namespace
 
 extern "C" {
@@ -82,6 +89,9 @@ VERVE_API verve_result VERVE_CALL verve_agent_sample_values(const verve_agent* a
         requireArg(out, "out");
         if (n_discrete > 0) requireArg(base_discrete, "base_discrete (with n_discrete > 0)");
         if (n_continuous > 0) requireArg(base_continuous, "base_continuous (with n_continuous > 0)");
+        // The counts first: the base arrays are only as long as the host says.
+        requireCount(n_discrete, a.descriptor().discreteSensors.size(), "n_discrete", "discrete sensors");
+        requireCount(n_continuous, a.descriptor().continuousSensors.size(), "n_continuous", "continuous sensors");
         if (n_axes < 1 || n_axes > 2) {
             throw verve::Error(verve::ErrorCode::InvalidArgument, "n_axes must be 1 or 2, not " + std::to_string(n_axes));
         }

@@ -11,7 +11,6 @@ namespace verve::core {
 namespace {
 
 constexpr float kCutoffWidths = 4.0f;            // activations beyond 4 sigma count as zero
-constexpr std::uint64_t kMaxFullFeatures = 20000000;  // refuse absurd full lattices
 
 using Lanes = Eigen::Array<float, 8, 1>;
 
@@ -81,12 +80,8 @@ std::uint32_t StateRepresentation::addFeature(std::uint64_t key, const float* ce
 }
 
 void StateRepresentation::allocateFullLattice() {
+    // AgentDescriptor::validate bounds the lattice (DescriptorLimits::kMaxFullLattice).
     const double perArray = std::pow(static_cast<double>(resolution_), numContinuous_);
-    if (perArray * static_cast<double>(keyCount_) > static_cast<double>(kMaxFullFeatures)) {
-        throw Error(ErrorCode::InvalidArgument,
-                    "invalid agent descriptor: full RBF allocation would create more than 20 million "
-                    "features; use dynamic allocation");
-    }
     // Lattice centres sit in the middle of resolution equal cells: -1 + (i + 0.5) * sigma.
     std::vector<std::uint32_t> index(numContinuous_, 0);
     std::vector<float> centre(numContinuous_);

@@ -42,13 +42,13 @@ void requireUnique(const char* field, std::vector<std::uint32_t> values) {
 
 std::uint64_t discreteCombinations(const AgentDescriptor& d) {
     std::uint64_t n = 1;
-    for (auto c : d.discreteSensors) n *= c;  // bounded by validate() (<= 9e15)
+    for (auto c : d.discreteSensors) n *= c;  // bounded by validate() (<= 2^53)
     return n;
 }
 
 void checkDescriptor(const AgentDescriptor& d) {
     try {
-        d.validate();
+        d.validate(FieldNaming::CAbi);  // the names a host sees in its verve_agent_desc
     } catch (const Error& e) {
         fail(std::string("descriptor: ") + e.what());
     }
