@@ -4,7 +4,7 @@
 
 #include "capi/capi_agent.hpp"
 
-using verve::capi::agentOf;
+using verve::capi::AgentUse;
 using verve::capi::guarded;
 using verve::capi::requireArg;
 
@@ -35,7 +35,8 @@ extern "C" {
 
 VERVE_API verve_result VERVE_CALL verve_agent_get_value(const verve_agent* agent, float* out_value) {
     return guarded(__func__, [&] {
-        const verve::Agent& a = agentOf(agent);
+        const AgentUse use(agent);
+        const verve::Agent& a = use.agent();
         requireArg(out_value, "out_value");
         *out_value = a.valueEstimate();
     });
@@ -43,7 +44,8 @@ VERVE_API verve_result VERVE_CALL verve_agent_get_value(const verve_agent* agent
 
 VERVE_API verve_result VERVE_CALL verve_agent_get_td_error(const verve_agent* agent, float* out_td_error) {
     return guarded(__func__, [&] {
-        const verve::Agent& a = agentOf(agent);
+        const AgentUse use(agent);
+        const verve::Agent& a = use.agent();
         requireArg(out_td_error, "out_td_error");
         *out_td_error = a.tdError();
     });
@@ -51,7 +53,8 @@ VERVE_API verve_result VERVE_CALL verve_agent_get_td_error(const verve_agent* ag
 
 VERVE_API verve_result VERVE_CALL verve_agent_get_rbf_count(const verve_agent* agent, uint32_t* out_count) {
     return guarded(__func__, [&] {
-        const verve::Agent& a = agentOf(agent);
+        const AgentUse use(agent);
+        const verve::Agent& a = use.agent();
         requireArg(out_count, "out_count");
         *out_count = static_cast<uint32_t>(a.rbfCount());
     });
@@ -59,7 +62,8 @@ VERVE_API verve_result VERVE_CALL verve_agent_get_rbf_count(const verve_agent* a
 
 VERVE_API verve_result VERVE_CALL verve_agent_get_stats(const verve_agent* agent, verve_agent_stats* out) {
     return guarded(__func__, [&] {
-        const verve::Agent& a = agentOf(agent);
+        const AgentUse use(agent);
+        const verve::Agent& a = use.agent();
         requireArg(out, "out");
         if (out->struct_size != sizeof(verve_agent_stats)) {
             throw verve::Error(verve::ErrorCode::InvalidArgument,
@@ -84,7 +88,8 @@ VERVE_API verve_result VERVE_CALL verve_agent_sample_values(const verve_agent* a
                                                             uint32_t n_discrete, const float* base_continuous,
                                                             uint32_t n_continuous, float* out, uint32_t out_count) {
     return guarded(__func__, [&] {
-        const verve::Agent& a = agentOf(agent);
+        const AgentUse use(agent);
+        const verve::Agent& a = use.agent();
         requireArg(axes, "axes");
         requireArg(out, "out");
         if (n_discrete > 0) requireArg(base_discrete, "base_discrete (with n_discrete > 0)");
