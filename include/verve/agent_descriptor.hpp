@@ -35,6 +35,8 @@ struct DescriptorLimits {
     static constexpr std::uint64_t kMaxWeightsPerRbf = 1ull << 20;  // one RBF's row: 4 MiB of floats
     static constexpr std::uint64_t kMaxFullLattice = 20000000;  // RBFs created up front (Full)
     static constexpr std::uint32_t kMaxPlanningSteps = 100000;
+    static constexpr std::uint64_t kDefaultMaxRbfs = 1000000;
+    static constexpr std::uint64_t kMaxRbfs = 0xFFFFFFFEull;  // feature indices are 32-bit; also "unlimited"
 };
 
 // Which names validate() gives the fields in its messages: the C++ members or the C ABI's.
@@ -74,6 +76,12 @@ struct AgentDescriptor {
     bool learnFromRealSteps = true;   // Dyna: the critic and actor also learn from real steps
                                       // (the original learned only inside plans)
     DiscretePrediction discretePrediction = DiscretePrediction::Categorical;
+
+    // Memory budget: at most this many RBFs (0: unlimited, i.e. DescriptorLimits::kMaxRbfs). At the
+    // budget nothing more is allocated: an observation is represented by the existing RBFs within
+    // reach, and AgentStats::rbfBudgetHits counts the updates that would have added one.
+    std::uint64_t maxRbfs = DescriptorLimits::kDefaultMaxRbfs;
+    std::uint64_t rbfBudget() const { return maxRbfs == 0 ? DescriptorLimits::kMaxRbfs : maxRbfs; }
 
     AgentDescriptor& addDiscreteSensor(std::uint32_t numValues) {
         discreteSensors.push_back(numValues);

@@ -1,4 +1,5 @@
 // Read-outs: value, TD error, RBF count, statistics, value-function images.
+#include <cstring>
 #include <string>
 #include <vector>
 
@@ -65,21 +66,28 @@ VERVE_API verve_result VERVE_CALL verve_agent_get_stats(const verve_agent* agent
         const AgentUse use(agent);
         const verve::Agent& a = use.agent();
         requireArg(out, "out");
-        if (out->struct_size != sizeof(verve_agent_stats)) {
+        const uint32_t size = out->struct_size;
+        if (size != VERVE_AGENT_STATS_SIZE_V1 && size != VERVE_AGENT_STATS_SIZE_V2) {
             throw verve::Error(verve::ErrorCode::InvalidArgument,
-                               "out->struct_size is " + std::to_string(out->struct_size) + ", expected sizeof(verve_agent_stats) = " +
-                                   std::to_string(sizeof(verve_agent_stats)));
+                               "out->struct_size is " + std::to_string(size) + ", expected sizeof(verve_agent_stats) = " +
+                                   std::to_string(VERVE_AGENT_STATS_SIZE_V2) + " (or " +
+                                   std::to_string(VERVE_AGENT_STATS_SIZE_V1) + " from an older header)");
         }
         const verve::AgentStats s = a.stats();
-        out->steps = s.steps;
-        out->rbf_count = s.rbfCount;
-        out->live_traces = s.liveTraces;
-        out->value = s.value;
-        out->td_error = s.tdError;
-        out->model_error = s.modelError;
-        out->predicted_uncertainty = s.predictedUncertainty;
-        out->planning_steps = s.planningSteps;
-        out->curiosity_reward = s.curiosityReward;
+        verve_agent_stats full{};
+        full.struct_size = size;
+        full.steps = s.steps;
+        full.rbf_count = s.rbfCount;
+        full.live_traces = s.liveTraces;
+        full.value = s.value;
+        full.td_error = s.tdError;
+        full.model_error = s.modelError;
+        full.predicted_uncertainty = s.predictedUncertainty;
+        full.planning_steps = s.planningSteps;
+        full.curiosity_reward = s.curiosityReward;
+        full.rbf_budget_hits = s.rbfBudgetHits;
+        full.clamped_rewards = s.clampedRewards;
+        std::memcpy(out, &full, size);  // an older, smaller struct gets only its own bytes
     });
 }
 

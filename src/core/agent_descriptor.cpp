@@ -31,6 +31,7 @@ constexpr Field kUncertaintyThreshold{"planningUncertaintyThreshold", "planning_
 constexpr Field kCuriosity{"curiosity", "curiosity"};
 constexpr Field kCuriosityFactor{"curiosityFactor", "curiosity_factor"};
 constexpr Field kDiscretePrediction{"discretePrediction", "discrete_prediction"};
+constexpr Field kMaxRbfs{"maxRbfs", "max_rbfs"};
 
 class Validator {
 public:
@@ -80,6 +81,8 @@ void validateDerivedSizes(const AgentDescriptor& d, const Validator& v) {
                   "full " + v.name(kAllocation) + " would create " + v.name(kResolution) + "^" +
                       v.name(kContinuousSensors) + " RBFs per discrete value combination, more than " +
                       std::to_string(Limits::kMaxFullLattice) + " in all; use dynamic allocation");
+        v.require(fullLatticeSize(d) <= d.rbfBudget(),
+                  "full " + v.name(kAllocation) + " would create more RBFs than " + v.name(kMaxRbfs) + " allows");
     }
     if (!d.planning) return;
     const std::uint64_t outputs = core::PredictiveModel::outputsPerAction(d);
@@ -130,6 +133,7 @@ void AgentDescriptor::validate(FieldNaming naming) const {
               v.name(kDiscretePrediction) + " must be Categorical or Ordinal");
     v.require(std::isfinite(curiosityFactor) && curiosityFactor >= 0.0f,
               v.name(kCuriosityFactor) + " must be a finite number >= 0");
+    v.requireAtMost(maxRbfs, Limits::kMaxRbfs, v.name(kMaxRbfs));
     validateDerivedSizes(*this, v);
 }
 

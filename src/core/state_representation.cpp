@@ -66,11 +66,28 @@ std::uint64_t StateRepresentation::cellHash(const std::int32_t* coords) const {
 }
 
 std::uint32_t StateRepresentation::addFeature(std::uint64_t key, const float* centre) {
+    // Everything that allocates comes first; from the first push_back on, nothing can fail.
+    reserveRoom(keys_, keys_.size() + 1);
+    reserveRoom(centres_, centres_.size() + numContinuous_);
+    cellCoords(centre, coords_.data());
+    const std::uint64_t hash = cellHash(coords_.data());
+    Array& array = arrays_[key];
+    Cell* cellPtr = nullptr;
+    try {
+        cellPtr = &array.cells[hash];
+        reserveRoom(cellPtr->features, cellPtr->features.size() + 1);
+        reserveRoom(cellPtr->centres, cellPtr->centres.size() + std::size_t(numContinuous_) * kLanes);
+    } catch (...) {
+        // Undo the empty entries just made (a cell or array that existed before is never empty).
+        auto c = array.cells.find(hash);
+        if (c != array.cells.end() && c->second.features.empty()) array.cells.erase(c);
+        if (array.cells.empty()) arrays_.erase(key);
+        throw;
+    }
+    Cell& cell = *cellPtr;
     const auto index = static_cast<std::uint32_t>(keys_.size());
     keys_.push_back(key);
     centres_.insert(centres_.end(), centre, centre + numContinuous_);
-    cellCoords(centre, coords_.data());
-    Cell& cell = arrays_[key].cells[cellHash(coords_.data())];
     const std::size_t lane = cell.features.size() % kLanes;
     if (lane == 0) cell.centres.resize(cell.centres.size() + std::size_t(numContinuous_) * kLanes, 0.0f);
     float* block = cell.centres.data() + cell.centres.size() - std::size_t(numContinuous_) * kLanes;
@@ -99,6 +116,10 @@ void StateRepresentation::allocateFullLattice() {
             }
         }
     }
+}
+
+std::uint32_t StateRepresentation::add(const std::int32_t* discrete, const float* continuous) {
+    return addFeature(discreteKey(discrete), continuous);
 }
 
 std::uint32_t StateRepresentation::activate(const std::int32_t* discrete, const float* continuous,

@@ -6,7 +6,15 @@
 namespace verve::core {
 
 TdLearner::TdLearner(std::uint32_t numActions, float traceThreshold)
-    : numActions_(numActions), stride_(1 + numActions), threshold_(traceThreshold) {}
+    : numActions_(numActions), stride_(1 + numActions), threshold_(traceThreshold) {
+    step_.reserve(stride_);
+}
+
+void TdLearner::reserve(std::uint32_t features) {
+    reserveRoom(traces_, std::size_t(features) * stride_);
+    reserveRoom(live_, std::size_t(features) + 1);
+    reserveRoom(strong_, features);
+}
 
 float TdLearner::value(const WeightTable& w, const std::vector<ActiveFeature>& phi) const {
     float v = 0.0f;

@@ -57,7 +57,10 @@ void checkDescriptor(const AgentDescriptor& d) {
 void checkFeatures(const AgentSnapshot& s) {
     const std::size_t features = s.featureKeys.size();
     const std::size_t nc = s.descriptor.continuousSensors.size();
-    if (features > UINT32_MAX) fail("too many features");
+    if (features > s.descriptor.rbfBudget()) {
+        fail("the save holds " + std::to_string(features) + " RBFs, more than its max_rbfs allows (" +
+             std::to_string(s.descriptor.rbfBudget()) + ")");
+    }
     const std::uint64_t combos = discreteCombinations(s.descriptor);
     for (std::size_t i = 0; i < features; ++i) {
         if (s.featureKeys[i] >= combos) {

@@ -97,7 +97,7 @@ static verve_agent* lv_open_agent(lua_State* L) {
 
 /* ---- descriptor <-> table --------------------------------------------------------------- */
 
-typedef enum lv_kind { LV_UINT, LV_FLOAT, LV_SEED, LV_BOOL, LV_ENUM } lv_kind;
+typedef enum lv_kind { LV_UINT, LV_FLOAT, LV_UINT64, LV_BOOL, LV_ENUM } lv_kind;
 
 typedef struct lv_field {
     const char* name;
@@ -120,7 +120,7 @@ static const lv_field lv_fields[] = {
     LV_FIELD("tau_eligibility", tau_eligibility, LV_FLOAT, NULL),
     LV_FIELD("policy_multiplier", policy_multiplier, LV_FLOAT, NULL),
     LV_FIELD("trace_threshold", trace_threshold, LV_FLOAT, NULL),
-    LV_FIELD("seed", seed, LV_SEED, NULL),
+    LV_FIELD("seed", seed, LV_UINT64, NULL),
     LV_FIELD("planning", planning, LV_BOOL, NULL),
     LV_FIELD("tau_model", tau_model, LV_FLOAT, NULL),
     LV_FIELD("max_planning_steps", max_planning_steps, LV_UINT, NULL),
@@ -130,6 +130,7 @@ static const lv_field lv_fields[] = {
     LV_FIELD("planning_accumulates_uncertainty", planning_accumulates_uncertainty, LV_BOOL, NULL),
     LV_FIELD("learn_from_real_steps", learn_from_real_steps, LV_BOOL, NULL),
     LV_FIELD("discrete_prediction", discrete_prediction, LV_ENUM, lv_prediction_names),
+    LV_FIELD("max_rbfs", max_rbfs, LV_UINT64, NULL),
 };
 #define LV_FIELD_COUNT (sizeof lv_fields / sizeof lv_fields[0])
 
@@ -152,7 +153,7 @@ static void lv_read_field(lua_State* L, const lv_field* f, verve_agent_desc* d) 
         if (lua_type(L, -1) != LUA_TNUMBER) lv_desc_error(L, f->name, "a number");
         *(float*)p = lv_to_float(lua_tonumber(L, -1));
         break;
-    case LV_SEED:
+    case LV_UINT64:
         if (!lv_tointeger(L, -1, &v) || v < 0) lv_desc_error(L, f->name, "a non-negative integer");
         *(uint64_t*)p = (uint64_t)v;
         break;
@@ -192,7 +193,7 @@ static void lv_push_field(lua_State* L, const lv_field* f, const verve_agent_des
     case LV_FLOAT:
         lua_pushnumber(L, (lua_Number)*(const float*)p);
         break;
-    case LV_SEED:
+    case LV_UINT64:
         lua_pushinteger(L, (lua_Integer)*(const uint64_t*)p);
         break;
     case LV_BOOL:
@@ -473,7 +474,7 @@ static int lv_stats(lua_State* L) {
     r = verve_agent_get_stats(lv_open_agent(L), &s);
     if (r != VERVE_OK) return lv_fail(L, "stats", r);
     if (lua_istable(L, 2)) lua_settop(L, 2);
-    else lua_createtable(L, 0, 9);
+    else lua_createtable(L, 0, 11);
     lua_pushinteger(L, (lua_Integer)s.steps);
     lua_setfield(L, -2, "steps");
     lua_pushinteger(L, (lua_Integer)s.rbf_count);
@@ -492,6 +493,10 @@ static int lv_stats(lua_State* L) {
     lua_setfield(L, -2, "planning_steps");
     lua_pushnumber(L, (lua_Number)s.curiosity_reward);
     lua_setfield(L, -2, "curiosity_reward");
+    lua_pushinteger(L, (lua_Integer)s.rbf_budget_hits);
+    lua_setfield(L, -2, "rbf_budget_hits");
+    lua_pushinteger(L, (lua_Integer)s.clamped_rewards);
+    lua_setfield(L, -2, "clamped_rewards");
     return 1;
 }
 
