@@ -16,20 +16,6 @@
 namespace verve::hardening {
 namespace {
 
-verve_agent_desc scenarioDesc() {
-    verve_agent_desc d;
-    verve_agent_desc_default(&d);
-    d.num_discrete_sensors = 1;
-    d.discrete_sensor_values[0] = 3;
-    d.num_continuous_sensors = 2;
-    d.continuous_sensor_circular[0] = 1;
-    d.num_actions = 3;
-    d.planning = 1;
-    d.curiosity = VERVE_CURIOSITY_NOVELTY;
-    d.seed = 11;
-    return d;
-}
-
 // The save of an agent, made with allocation failures off and not counted.
 std::string bytesOf(const verve_agent* agent, CountingAllocator& allocator) {
     const long failAt = allocator.failAt.exchange(-1);
@@ -80,7 +66,7 @@ public:
 
 private:
     CountingAllocator& allocator_;
-    verve_agent_desc desc_ = scenarioDesc();
+    verve_agent_desc desc_ = mixedDesc(true, 11);
     verve_agent* agent_ = nullptr;
     size_t size_ = 0;
     std::string saved_;

@@ -10,6 +10,22 @@ namespace verve::hardening {
 
 inline std::string lastError() { return verve_last_error(); }
 
+// One discrete sensor (3 values), two continuous ones (the first circular), three actions; with
+// planning, novelty curiosity too: every part of an agent that allocates.
+inline verve_agent_desc mixedDesc(bool planning, uint64_t seed = 1) {
+    verve_agent_desc d;
+    verve_agent_desc_default(&d);
+    d.num_discrete_sensors = 1;
+    d.discrete_sensor_values[0] = 3;
+    d.num_continuous_sensors = 2;
+    d.continuous_sensor_circular[0] = 1;
+    d.num_actions = 3;
+    d.planning = planning ? 1 : 0;
+    d.curiosity = planning ? VERVE_CURIOSITY_NOVELTY : VERVE_CURIOSITY_NONE;
+    d.seed = seed;
+    return d;
+}
+
 inline verve_agent* createOrFail(const verve_agent_desc& d) {
     verve_agent* agent = nullptr;
     EXPECT_EQ(verve_agent_create(&d, &agent), VERVE_OK) << verve_last_error();

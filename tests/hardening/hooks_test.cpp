@@ -36,19 +36,6 @@ protected:
     CountingAllocator allocator_;
 };
 
-verve_agent_desc planningDesc() {
-    verve_agent_desc d;
-    verve_agent_desc_default(&d);
-    d.num_discrete_sensors = 1;
-    d.discrete_sensor_values[0] = 3;
-    d.num_continuous_sensors = 2;
-    d.continuous_sensor_circular[0] = 1;
-    d.num_actions = 3;
-    d.planning = 1;
-    d.curiosity = VERVE_CURIOSITY_NOVELTY;
-    return d;
-}
-
 // 40 distinct observations, visited in turn: after one lap every RBF exists.
 verve_result lap(verve_agent* agent, int i, float reward = 0.1f) {
     const int32_t disc = i % 3;
@@ -59,7 +46,7 @@ verve_result lap(verve_agent* agent, int i, float reward = 0.1f) {
 
 TEST_F(Hooks, EveryBlockGoesThroughTheHostAllocator) {
     install();
-    verve_agent* agent = createOrFail(planningDesc());
+    verve_agent* agent = createOrFail(mixedDesc(true));
     for (int i = 0; i < 100; ++i) ASSERT_EQ(lap(agent, i), VERVE_OK);
     const std::string xml = saveToString(agent);
     verve_agent* loaded = nullptr;
@@ -72,7 +59,7 @@ TEST_F(Hooks, EveryBlockGoesThroughTheHostAllocator) {
 
 TEST_F(Hooks, AnUpdateAfterWarmUpAllocatesNothing) {
     install();
-    verve_agent* agent = createOrFail(planningDesc());
+    verve_agent* agent = createOrFail(mixedDesc(true));
     for (int i = 0; i < 400; ++i) ASSERT_EQ(lap(agent, i), VERVE_OK);
     ASSERT_EQ(verve_agent_end_episode(agent, 1.0f), VERVE_OK);
     for (int i = 0; i < 40; ++i) ASSERT_EQ(lap(agent, i), VERVE_OK);
@@ -92,7 +79,7 @@ TEST_F(Hooks, AnUpdateAfterWarmUpAllocatesNothing) {
 
 TEST_F(Hooks, HooksChangeOnlyWhileVerveHoldsNoMemory) {
     install();
-    verve_agent* agent = createOrFail(planningDesc());
+    verve_agent* agent = createOrFail(mixedDesc(true));
     const verve_hooks h = allocator_.hooks();
     EXPECT_EQ(verve_set_hooks(&h), VERVE_ERROR_INVALID_STATE);
     EXPECT_NE(lastError().find("destroy"), std::string::npos) << lastError();
@@ -109,7 +96,7 @@ TEST_F(Hooks, HooksChangeOnlyWhileVerveHoldsNoMemory) {
 TEST_F(Hooks, ClampedRewardsAndTheBudgetAreReportedOnceAndCounted) {
     Log log;
     install(&Log::record, &log);
-    verve_agent_desc d = planningDesc();
+    verve_agent_desc d = mixedDesc(true);
     d.max_rbfs = 5;
     verve_agent* agent = createOrFail(d);
     for (int i = 0; i < 100; ++i) ASSERT_EQ(lap(agent, i, i < 2 ? 3.0f : 0.0f), VERVE_OK);
@@ -146,7 +133,7 @@ struct Intruder {
 TEST_F(Hooks, ACallOverlappingAnotherOnTheSameAgentIsRefused) {
     Intruder intruder;
     install(&Intruder::during, &intruder);
-    intruder.agent = createOrFail(planningDesc());
+    intruder.agent = createOrFail(mixedDesc(true));
     ASSERT_EQ(lap(intruder.agent, 0, 5.0f), VERVE_OK);  // the clamp warning fires inside the update
     EXPECT_EQ(intruder.result, VERVE_ERROR_INVALID_STATE);
     EXPECT_NE(intruder.message.find("in use"), std::string::npos) << intruder.message;

@@ -14,19 +14,6 @@
 namespace verve::hardening {
 namespace {
 
-verve_agent_desc mixedDesc(uint64_t seed, bool planning) {
-    verve_agent_desc d;
-    verve_agent_desc_default(&d);
-    d.num_discrete_sensors = 1;
-    d.discrete_sensor_values[0] = 3;
-    d.num_continuous_sensors = 2;
-    d.continuous_sensor_circular[0] = 1;
-    d.num_actions = 3;
-    d.planning = planning ? 1 : 0;
-    d.seed = seed;
-    return d;
-}
-
 verve_result step(verve_agent* agent, int i, uint32_t* action) {
     const int32_t disc = i % 3;
     const float cont[2] = {std::sin(0.1f * static_cast<float>(i)), std::cos(0.37f * static_cast<float>(i))};
@@ -41,7 +28,7 @@ TEST(Threads, SeparateAgentsOnManyThreadsAreIndependent) {
         threads.emplace_back([t, &failures] {
             std::string& fail = failures[t];
             verve_agent* agent = nullptr;
-            const verve_agent_desc d = mixedDesc(100 + t, t % 2 == 1);
+            const verve_agent_desc d = mixedDesc(t % 2 == 1, 100 + t);
             if (verve_agent_create(&d, &agent) != VERVE_OK) return void(fail = verve_last_error());
             const std::string path = ::testing::TempDir() + "/verve_thread_" + std::to_string(t) + ".xml";
             for (int round = 0; round < 3 && fail.empty(); ++round) {
@@ -83,7 +70,7 @@ TEST(Threads, SeparateAgentsOnManyThreadsAreIndependent) {
 // Two threads hammer one agent: every call either runs alone or is refused, so the steps the
 // agent counts are exactly the updates that succeeded.
 TEST(Threads, OneAgentFromTwoThreadsIsRefusedNeverCorrupted) {
-    verve_agent* agent = createOrFail(mixedDesc(7, true));
+    verve_agent* agent = createOrFail(mixedDesc(true, 7));
     std::atomic<uint64_t> ok{0}, refused{0}, other{0};
     std::atomic<bool> badMessage{false};
     auto hammer = [&](int offset) {
@@ -115,7 +102,7 @@ TEST(Threads, OneAgentFromTwoThreadsIsRefusedNeverCorrupted) {
 // Read-only calls share the agent's scratch memory: concurrent ones are refused the same way,
 // and a call that runs gives the exact image.
 TEST(Threads, ConcurrentSampleValuesAreExactOrRefused) {
-    verve_agent* agent = createOrFail(mixedDesc(3, false));
+    verve_agent* agent = createOrFail(mixedDesc(false, 3));
     uint32_t action = 0;
     for (int i = 0; i < 400; ++i) ASSERT_EQ(step(agent, i, &action), VERVE_OK);
     const verve_value_axis axes[2] = {{VERVE_SENSOR_CONTINUOUS, 0, 16}, {VERVE_SENSOR_CONTINUOUS, 1, 16}};
