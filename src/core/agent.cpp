@@ -36,7 +36,7 @@ Agent::Impl::Impl(const AgentDescriptor& d)
     previousDiscrete.assign(desc.discreteSensors.size(), 0);
     previousContinuous.assign(desc.continuousSensors.size(), 0.0f);
     normalized.reserve(desc.continuousSensors.size());
-    activations.reserve(desc.numActions);
+    activations.reserve(td.traceStride());  // chooseAction's scratch: one per trace component
     stats.rbfCount = rep.featureCount();
 }
 
@@ -85,8 +85,8 @@ void Agent::Impl::plan(const StepConstants& k) {
 void Agent::Impl::reserveFor(std::uint32_t features) {
     rep.reserve(features);
     weights.reserve(features);
-    core::reserveRoom(current, features);
-    core::reserveRoom(previous, features);
+    core::reserveRoom(current, core::StateRepresentation::foundCapacity(features));
+    core::reserveRoom(previous, core::StateRepresentation::foundCapacity(features));
     td.reserve(features);
     if (desc.planning) planner.reserve(features);
 }
