@@ -63,6 +63,13 @@ void installHooks(const verve_hooks* hooks) {
         }
         h = *hooks;
     }
+#ifndef VERVE_ROUTES_CXX_MEMORY
+    if (h.malloc_fn != nullptr) {
+        throw Error(ErrorCode::InvalidState,
+                    "this libverve links the C++ runtime dynamically (built with VERVE_SELF_CONTAINED=OFF), so not "
+                    "all of its memory can go through an allocator hook; only the log hook is accepted");
+    }
+#endif
     const std::int64_t live = liveBlocks.load(std::memory_order_acquire);
     if (live != 0) {
         throw Error(ErrorCode::InvalidState, "Verve still holds " + std::to_string(live) +
