@@ -33,15 +33,21 @@ VERVE_API verve_result VERVE_CALL verve_agent_save_memory(const verve_agent* age
         const AgentUse use(agent);
         const verve::Agent& a = use.agent();
         requireArg(size, "size");
-        const std::string xml = verve::saveAgentToString(a);
-        const size_t capacity = *size;
-        *size = xml.size();
-        if (buffer == nullptr) return;  // the size query
-        if (capacity < xml.size()) {
-            throw verve::Error(verve::ErrorCode::BufferTooSmall, "the buffer holds " + std::to_string(capacity) +
-                                                                     " bytes, the save needs " + std::to_string(xml.size()));
+        // Serialised once for both calls: the size query keeps its bytes for the call with a buffer.
+        const std::string* kept = agent->keptSave();
+        if (kept == nullptr) {
+            agent->keepSave(verve::saveAgentToString(a));
+            kept = agent->keptSave();
         }
-        std::memcpy(buffer, xml.data(), xml.size());
+        const size_t capacity = *size;
+        *size = kept->size();
+        if (buffer == nullptr) return;  // the size query
+        if (capacity < kept->size()) {
+            throw verve::Error(verve::ErrorCode::BufferTooSmall, "the buffer holds " + std::to_string(capacity) +
+                                                                     " bytes, the save needs " + std::to_string(kept->size()));
+        }
+        std::memcpy(buffer, kept->data(), kept->size());
+        agent->dropSave();  // delivered: free the copy
     });
 }
 
