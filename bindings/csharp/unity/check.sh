@@ -39,8 +39,8 @@ fi
 version=$(sed -n 's:.*<Version>\(.*\)</Version>.*:\1:p' "$binding/Verve.csproj")
 jq -e --arg v "$version" '.name == "com.verve.agent" and .version == $v and .unity == "2021.2" and .license == "MIT"' \
     "$pkg/package.json" >/dev/null || fail "package.json is not valid JSON or has the wrong name, version, unity or license"
-jq -e '.name == "Verve" and .allowUnsafeCode == true and .noEngineReferences == true' \
-    "$pkg/Runtime/Verve.asmdef" >/dev/null || fail "Runtime/Verve.asmdef is not valid JSON or lacks name Verve / allowUnsafeCode"
+jq -e '.name == "Verve.Net" and .allowUnsafeCode == true and .noEngineReferences == true' \
+    "$pkg/Runtime/Verve.asmdef" >/dev/null || fail "Runtime/Verve.asmdef is not valid JSON or lacks name Verve.Net / allowUnsafeCode"
 
 # .meta files: one per asset, distinct GUIDs.
 while read -r path; do
@@ -94,9 +94,9 @@ for variant in dynamic static; do
     [[ $variant == dynamic ]] || define=(-define:VERVE_STATIC_LINK)
     mkdir -p "$work/$variant"
     dotnet "$sdk/Roslyn/bincore/csc.dll" -nologo -noconfig -nostdlib -target:library -langversion:9 -unsafe \
-        -warnaserror "${define[@]}" -r:"$netstandard" -out:"$work/$variant/Verve.dll" "${sources[@]}" ||
+        -warnaserror "${define[@]}" -r:"$netstandard" -out:"$work/$variant/Verve.Net.dll" "${sources[@]}" ||
         fail "Runtime/ does not compile on its own (C# 9, netstandard2.1, $variant)"
-    mono_args=("$work/$variant/Verve.dll" "$pkg/Plugins/Linux/x86_64")
+    mono_args=("$work/$variant/Verve.Net.dll" "$pkg/Plugins/Linux/x86_64")
     [[ $variant == dynamic ]] || mono_args=(--static "${mono_args[@]}")
     mono_log=$("$here/../mono/run.sh" "${mono_args[@]}" 2>&1) ||
         { echo "$mono_log" >&2; fail "the assembly compiled from Runtime/ ($variant) fails under Mono"; }

@@ -40,7 +40,7 @@ cat >"$pkg/package.json" <<EOF
 EOF
 cat >"$pkg/Runtime/Verve.asmdef" <<'EOF'
 {
-  "name": "Verve",
+  "name": "Verve.Net",
   "rootNamespace": "Verve",
   "references": [],
   "includePlatforms": [],
