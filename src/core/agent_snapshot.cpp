@@ -119,14 +119,7 @@ AgentSnapshot Agent::snapshot() const {
     AgentSnapshot snap;
     snap.descriptor = s.desc;
     snap.learning = s.learning;
-    const std::uint32_t count = s.rep.featureCount();
-    const std::uint32_t nc = s.rep.numContinuous();
-    snap.featureKeys.reserve(count);
-    snap.centres.reserve(std::size_t(count) * nc);
-    for (std::uint32_t i = 0; i < count; ++i) {
-        snap.featureKeys.push_back(s.rep.featureKey(i));
-        snap.centres.insert(snap.centres.end(), s.rep.centre(i), s.rep.centre(i) + nc);
-    }
+    s.rep.features(snap.featureKeys, snap.centres);
     snap.stride = s.weights.stride();
     snap.weights = s.weights.data();
     snap.traceStride = s.td.traceStride();
