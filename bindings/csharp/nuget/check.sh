@@ -1,7 +1,7 @@
 #!/usr/bin/env bash
 # Checks a Verve NuGet package as its users get it:
 #   bindings/csharp/nuget/check.sh <Verve.nupkg> <folder with libverve.so> [<folder with verve.dll>]
-# - the license expression (MIT), the readme, the assembly, and the native library of each runtime
+# - the license expression (MIT), the readme, the third-party notices, the assembly, and the native library of each runtime
 #   given, byte for byte (and no win-x64 library when no verve.dll folder is given);
 # - a console project referencing the package (restored from it alone, into a private package cache)
 #   builds and runs on Linux, loading libverve.so from the package's runtimes/linux-x64/native/;
@@ -28,7 +28,9 @@ nuspec="$work/unpacked/Verve.nuspec"
 [[ -f $nuspec ]] || fail "no Verve.nuspec in $nupkg"
 grep -q '<license type="expression">MIT</license>' "$nuspec" || fail "the nuspec has no MIT license expression"
 grep -q '<readme>README.md</readme>' "$nuspec" || fail "the nuspec names no README.md"
-grep -q '^# Verve for C#' "$work/unpacked/README.md" || fail "README.md is not docs/csharp.md"
+cmp -s "$here/../../../docs/csharp.md" "$work/unpacked/README.md" || fail "README.md is missing or is not docs/csharp.md"
+cmp -s "$here/../../../THIRD_PARTY_NOTICES.md" "$work/unpacked/THIRD_PARTY_NOTICES.md" ||
+    fail "THIRD_PARTY_NOTICES.md is missing or differs from the repository's"
 [[ -f $work/unpacked/lib/netstandard2.1/Verve.Net.dll ]] || fail "no lib/netstandard2.1/Verve.Net.dll"
 cmp -s "$linux_lib" "$work/unpacked/runtimes/linux-x64/native/libverve.so" ||
     fail "runtimes/linux-x64/native/libverve.so is missing or differs from $linux_lib"
@@ -39,7 +41,7 @@ elif [[ -e $work/unpacked/runtimes/win-x64 ]]; then
     fail "the package has a win-x64 library, but none was given to check it against"
 fi
 version=$(sed -n 's:.*<version>\(.*\)</version>.*:\1:p' "$nuspec")
-echo "nuget check: Verve $version: license MIT, README.md, Verve.Net.dll, linux-x64${windows_lib:+ and win-x64} native libraries"
+echo "nuget check: Verve $version: license MIT, README.md, THIRD_PARTY_NOTICES.md, Verve.Net.dll, linux-x64${windows_lib:+ and win-x64} native libraries"
 
 # The consumer restores from the package's folder only, into a private cache (a stale copy of the same
 # version in ~/.nuget/packages would hide a broken package).

@@ -1,7 +1,7 @@
 #!/usr/bin/env bash
 # Checks a Unity package made by make_package.sh without Unity (none is installed here):
 #   bindings/csharp/unity/check.sh <package folder> <folder with libverve.so> [<folder with verve.dll>]
-# - the layout: package.json, README.md, Runtime/Verve.asmdef with every source of the binding,
+# - the layout: package.json, README.md, LICENSE.md, THIRD_PARTY_NOTICES.md, Runtime/Verve.asmdef with every source of the binding,
 #   the native library of each platform given (byte for byte, and no Windows one when none is given);
 # - package.json and the .asmdef are valid JSON with the right name, version and unsafe code allowed;
 # - every file and folder has a .meta, every .meta its file, all GUIDs distinct;
@@ -24,7 +24,11 @@ binding="$here/../Verve"
 fail() { echo "unity check: $*" >&2; exit 1; }
 
 # Layout.
-for f in package.json README.md Runtime/Verve.asmdef; do [[ -f $pkg/$f ]] || fail "no $f"; done
+for f in package.json Runtime/Verve.asmdef; do [[ -f $pkg/$f ]] || fail "no $f"; done
+repo="$here/../../.."
+for pair in docs/csharp.md:README.md LICENSE:LICENSE.md THIRD_PARTY_NOTICES.md:THIRD_PARTY_NOTICES.md; do
+    cmp -s "$repo/${pair%%:*}" "$pkg/${pair#*:}" || fail "${pair#*:} is missing or differs from the repository's ${pair%%:*}"
+done
 expected_sources=$(cd "$binding" && find . -name '*.cs' -not -path './obj/*' -not -path './bin/*' | sort)
 packaged_sources=$(cd "$pkg/Runtime" && find . -name '*.cs' | sort)
 [[ $expected_sources == "$packaged_sources" ]] || fail "Runtime/ does not hold exactly the binding's sources"
