@@ -58,6 +58,7 @@ static verve_agent_desc fullDesc(const AgentDescriptor& in) noexcept {
     d.planning_accumulates_uncertainty = in.planningAccumulatesUncertainty ? 1u : 0u;
     d.learn_from_real_steps = in.learnFromRealSteps ? 1u : 0u;
     d.discrete_prediction = static_cast<std::uint32_t>(in.discretePrediction);
+    d.max_rbfs = in.maxRbfs;
     d.policy_weight_bound = in.policyWeightBound;
     return d;
 }
@@ -116,8 +117,9 @@ AgentDescriptor toDescriptor(const verve_agent_desc& in) {
     out.planningAccumulatesUncertainty = d.planning_accumulates_uncertainty != 0;
     out.learnFromRealSteps = d.learn_from_real_steps != 0;
     out.discretePrediction = static_cast<DiscretePrediction>(d.discrete_prediction);
+    out.maxRbfs = d.max_rbfs;
     out.policyWeightBound = d.policy_weight_bound;
-    out.validate();
+    out.validate(FieldNaming::CAbi);
     return out;
 }
 

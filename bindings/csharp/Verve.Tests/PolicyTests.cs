@@ -90,7 +90,7 @@ namespace Verve.Tests
             Assert.Equal(4f, agent.Options.PolicyWeightBound);
             Assert.Equal(0f, new AgentOptions().PolicyWeightBound);
             var ex = Assert.Throws<VerveException>(() => Cue(bound: -1f));
-            Assert.Contains("policyWeightBound", ex.Message);
+            Assert.Contains("policy_weight_bound", ex.Message);
         }
     }
 }

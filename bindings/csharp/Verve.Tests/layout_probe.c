@@ -32,7 +32,7 @@ int main(void) {
     FIELD(verve_agent_desc, planning_accumulates_uncertainty);
     FIELD(verve_agent_desc, learn_from_real_steps);
     FIELD(verve_agent_desc, discrete_prediction);
-    FIELD(verve_agent_desc, reserved_v2);
+    FIELD(verve_agent_desc, max_rbfs);
     FIELD(verve_agent_desc, policy_weight_bound);
 
     SIZE(verve_agent_stats);
@@ -46,12 +46,15 @@ int main(void) {
     FIELD(verve_agent_stats, predicted_uncertainty);
     FIELD(verve_agent_stats, planning_steps);
     FIELD(verve_agent_stats, curiosity_reward);
+    FIELD(verve_agent_stats, rbf_budget_hits);
+    FIELD(verve_agent_stats, clamped_rewards);
 
     SIZE(verve_value_axis);
     FIELD(verve_value_axis, kind);
     FIELD(verve_value_axis, index);
     FIELD(verve_value_axis, samples);
 
+    printf("const VERVE_AGENT_DESC_SIZE_V2 %u\n", (unsigned)VERVE_AGENT_DESC_SIZE_V2);
     printf("const VERVE_AGENT_DESC_SIZE_V3 %u\n", (unsigned)VERVE_AGENT_DESC_SIZE_V3);
     printf("const VERVE_GREEDY %d\n", VERVE_ACTION_GREEDY);
     printf("const VERVE_VERSION_NUMBER %d\n", VERVE_VERSION_NUMBER);

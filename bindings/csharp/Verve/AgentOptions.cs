@@ -55,6 +55,7 @@ namespace Verve
             PlanningAccumulatesUncertainty = d.planning_accumulates_uncertainty != 0;
             LearnFromRealSteps = d.learn_from_real_steps != 0;
             DiscretePrediction = (DiscretePrediction)d.discrete_prediction;
+            MaxRbfs = (long)d.max_rbfs;
             PolicyWeightBound = d.policy_weight_bound;
         }
 
@@ -118,6 +119,9 @@ namespace Verve
         /// <summary>How the model predicts discrete sensors.</summary>
         public DiscretePrediction DiscretePrediction { get; set; }
 
+        /// <summary>RBF budget (<c>max_rbfs</c>, default 1,000,000; 0: unlimited). At the budget the agent
+        /// keeps working with the RBFs it has; <see cref="AgentStats.RbfBudgetHits"/> counts the misses.</summary>
+        public long MaxRbfs { get; set; }
         /// <summary>Above 0, every actor weight stays within +-bound, so a habit can be unlearned when the
         /// world changes (with a slow critic and a large policy multiplier); 0 (default): unbounded.</summary>
         public float PolicyWeightBound { get; set; }
@@ -175,6 +179,7 @@ namespace Verve
             d.planning_accumulates_uncertainty = PlanningAccumulatesUncertainty ? 1u : 0u;
             d.learn_from_real_steps = LearnFromRealSteps ? 1u : 0u;
             d.discrete_prediction = (uint)DiscretePrediction;
+            d.max_rbfs = MaxRbfs < 0 ? ulong.MaxValue : (ulong)MaxRbfs; // negative: refused by the library
             d.policy_weight_bound = PolicyWeightBound;
             return d;
         }
