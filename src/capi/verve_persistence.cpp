@@ -5,7 +5,7 @@
 #include "capi/capi_agent.hpp"
 #include "verve/io.hpp"
 
-using verve::capi::agentOf;
+using verve::capi::AgentUse;
 using verve::capi::guarded;
 using verve::capi::requireArg;
 
@@ -13,7 +13,8 @@ extern "C" {
 
 VERVE_API verve_result VERVE_CALL verve_agent_save(const verve_agent* agent, const char* path) {
     return guarded(__func__, [&] {
-        const verve::Agent& a = agentOf(agent);
+        const AgentUse use(agent);
+        const verve::Agent& a = use.agent();
         requireArg(path, "path");
         verve::saveAgent(a, path);
     });
@@ -29,17 +30,24 @@ VERVE_API verve_result VERVE_CALL verve_agent_load(const char* path, verve_agent
 
 VERVE_API verve_result VERVE_CALL verve_agent_save_memory(const verve_agent* agent, void* buffer, size_t* size) {
     return guarded(__func__, [&] {
-        const verve::Agent& a = agentOf(agent);
+        const AgentUse use(agent);
+        const verve::Agent& a = use.agent();
         requireArg(size, "size");
-        const std::string xml = verve::saveAgentToString(a);
-        const size_t capacity = *size;
-        *size = xml.size();
-        if (buffer == nullptr) return;  // the size query
-        if (capacity < xml.size()) {
-            throw verve::Error(verve::ErrorCode::BufferTooSmall, "the buffer holds " + std::to_string(capacity) +
-                                                                     " bytes, the save needs " + std::to_string(xml.size()));
+        // Serialised once for both calls: the size query keeps its bytes for the call with a buffer.
+        const std::string* kept = agent->keptSave();
+        if (kept == nullptr) {
+            agent->keepSave(verve::saveAgentToString(a));
+            kept = agent->keptSave();
         }
-        std::memcpy(buffer, xml.data(), xml.size());
+        const size_t capacity = *size;
+        *size = kept->size();
+        if (buffer == nullptr) return;  // the size query
+        if (capacity < kept->size()) {
+            throw verve::Error(verve::ErrorCode::BufferTooSmall, "the buffer holds " + std::to_string(capacity) +
+                                                                     " bytes, the save needs " + std::to_string(kept->size()));
+        }
+        std::memcpy(buffer, kept->data(), kept->size());
+        agent->dropSave();  // delivered: free the copy
     });
 }
 
