@@ -3,6 +3,7 @@
 #include <string>
 
 #include "capi/capi_agent.hpp"
+#include "capi/capi_buffer.hpp"
 #include "verve/io.hpp"
 
 using verve::capi::agentOf;
@@ -31,15 +32,7 @@ VERVE_API verve_result VERVE_CALL verve_agent_save_memory(const verve_agent* age
     return guarded(__func__, [&] {
         const verve::Agent& a = agentOf(agent);
         requireArg(size, "size");
-        const std::string xml = verve::saveAgentToString(a);
-        const size_t capacity = *size;
-        *size = xml.size();
-        if (buffer == nullptr) return;  // the size query
-        if (capacity < xml.size()) {
-            throw verve::Error(verve::ErrorCode::BufferTooSmall, "the buffer holds " + std::to_string(capacity) +
-                                                                     " bytes, the save needs " + std::to_string(xml.size()));
-        }
-        std::memcpy(buffer, xml.data(), xml.size());
+        verve::capi::copyOut(verve::saveAgentToString(a), buffer, *size);
     });
 }
 
