@@ -1,3 +1,4 @@
+using System;
 using System.Runtime.InteropServices;
 
 namespace Verve.Native
@@ -53,6 +54,16 @@ namespace Verve.Native
         public float predicted_uncertainty;
         public uint planning_steps;
         public float curiosity_reward;
+    }
+
+    [StructLayout(LayoutKind.Sequential)]
+    internal struct verve_batch_desc
+    {
+        public uint struct_size;
+        public uint worker_count;
+        public IntPtr enqueue_task; // host job-system callbacks: always NULL from C#
+        public IntPtr finish_task;
+        public IntPtr user_context;
     }
 
 #pragma warning restore IDE1006
