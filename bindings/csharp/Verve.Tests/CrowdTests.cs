@@ -74,7 +74,7 @@ namespace Verve.Tests
             using var batch = new Batch(2);
             var (rewards, discrete, continuous) = Inputs(crowd, 0);
             var before = crowd.Select(a => a.SaveToBytes()).ToArray();
-            continuous[4] = float.NaN; // agent 1's first sensor
+            continuous[2] = float.NaN; // agent 1's first sensor (agent 0 has 2)
             var actions = new int[crowd.Length];
             var results = new ResultCode[crowd.Length];
             var e = Assert.Throws<VerveException>(() => batch.Update(crowd, rewards, discrete, continuous, TestAgents.Dt, actions, results));
