@@ -232,6 +232,7 @@ typedef struct verve_batch_desc {
 VERVE_API verve_result VERVE_CALL verve_batch_desc_default(verve_batch_desc* desc);
 VERVE_API verve_result VERVE_CALL verve_batch_create(const verve_batch_desc* desc, verve_batch** out);
 VERVE_API void VERVE_CALL verve_batch_destroy(verve_batch* batch); /* joins its threads; NULL is ignored */
+/* A batch is used by one thread at a time, like an agent. */
 VERVE_API verve_result VERVE_CALL verve_batch_get_worker_count(const verve_batch* batch, uint32_t* out_count);
 /* One step of n agents (any shapes, separate agents or bodies), exactly as n verve_agent_update
  * calls in array order would do it, on any number of threads. Agent i reads rewards[i] and its

@@ -11,13 +11,13 @@ cd "$(dirname "$0")/.."
 ./scripts/build.sh verve_crowd_bench >/dev/null
 csv=build/bench-crowd.csv
 build/bench/verve_crowd_bench --benchmark_repetitions=3 --benchmark_report_aggregates_only=true \
-  --benchmark_min_time=0.2s --benchmark_format=csv "$@" >"$csv" 2>/dev/null
+  --benchmark_min_time=0.2 --benchmark_format=csv "$@" >"$csv" 2>/dev/null
 # name = crowd/<shape>/<agents>/<brains>/<mode>; one line per median.
 table=build/bench-crowd.txt
 awk -F, '
-  /^name,/ { for (i = 1; i <= NF; i++) if ($i == "updates_per_s") col = i; next }
+  /^name,/ { for (i = 1; i <= NF; i++) { h = $i; gsub(/"/, "", h); if (h == "updates_per_s") col = i }; next }
   $1 ~ /_median"?$/ {
-    name = $1; gsub(/"/, "", name); sub(/_median$/, "", name)
+    name = $1; gsub(/"/, "", name); sub(/_median$/, "", name); sub(/\/real_time$/, "", name)
     split(name, p, "/")
     printf "%-10s %6s agents  %-10s %-16s %12.0f updates/s  %5.2fx of 600k/s\n", p[2], p[3], p[4], p[5], $col, $col / 600000
   }' "$csv" | tee "$table"
@@ -44,7 +44,7 @@ set xlabel 'agents updated per frame'
 set ylabel 'updates per second'
 set logscale xy
 set grid
-set key outside right
+set key below
 set format y '%.0s%c'
 plot '$dat' using 1:2 with linespoints lw 2 lc rgb '#e67e22' dt 2 title 'tiny, one call each', \
      '' using 1:3 with linespoints lw 2 lc rgb '#e67e22' title 'tiny, batch, 2 threads', \
