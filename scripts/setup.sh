@@ -16,6 +16,10 @@ packages=(
 # Only for ./scripts/test.sh: each group names what it is for.
 test_packages=(
   dpkg-dev                                     # apt-get source: third-party sources (scripts/fetch_source.sh)
+  love                                         # LÖVE 11: the samples/love game's test (tests/love)
+  mono-devel                                   # C# binding under Mono 6.8, Unity's runtime: mcs, mono, netstandard facade
+  unzip jq                                     # C#: unpacking the NuGet package, checking the Unity package's JSON
+  clang-14 libclang-rt-14-dev                  # libFuzzer targets (scripts/fuzz.sh)
 )
 
 if [ "${1:-}" = "--test" ]; then packages+=("${test_packages[@]}"); fi

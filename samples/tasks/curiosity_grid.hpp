@@ -1,4 +1,4 @@
-// The curiosity grid (thesis fig. 43; /work/shared/reference/grid-tasks.md): a 10x10 open grid,
+// The curiosity grid (thesis fig. 43; layout as in the original experiments): a 10x10 open grid,
 // start (1, 1). Standing on (4, 4), (4, 1) or (1, 4) after a step earns 0.1, on (8, 8) 1.0,
 // anywhere else 0 (the original code's value, whose numbers we compare against; the thesis
 // figure says -1). No terminal state: every trial is exactly 100 steps. Discrete x, y sensors.

@@ -1,4 +1,4 @@
-// The thesis's 2D mazes (/work/shared/reference/grid-tasks.md): a fixed start and goal on a 10x10
+// The thesis's 2D mazes (layouts as in the original experiments): a fixed start and goal on a 10x10
 // grid with walls. Reward +1 at the goal (terminal), -1 on every other step; 10,000-step cap.
 // Actions: left, right, up, down, stay. Sensors: x, y (discrete 10 each, or continuous at
 // resolution 15).

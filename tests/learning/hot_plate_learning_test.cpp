@@ -3,7 +3,7 @@
 // (hot_plate.hpp). A final number depends on how far the sampled starts happened to be from safety,
 // so we compare the *excess* steps over the optimum of the very same trials, with the original's
 // excess measured the same way: by running its own test code over many seeds (docs/experiments.md,
-// "Measuring the original"). The single numbers of original-verve.md (4.8, 4.7, 9.6, ...) are one
+// "Measuring the original"). The original's single-run numbers (4.8, 4.7, 9.6, ...) are one
 // draw each; the original's own raw finals range e.g. 4.60-5.09 (1D) over seeds.
 #include <gtest/gtest.h>
 

@@ -1,4 +1,7 @@
+// Nullable annotations on: Unity compiles these sources without the .csproj that enables them.
+#nullable enable
 using System;
+using System.Runtime.InteropServices;
 using System.Text;
 using Verve.Native;
 
@@ -48,8 +51,11 @@ namespace Verve
         {
             AgentHandle handle = Handle;
             uint action;
-            fixed (int* d = discrete)
-            fixed (float* c = continuous)
+            // Pinned through MemoryMarshal.GetReference, not `fixed (int* d = discrete)`: that form calls
+            // ReadOnlySpan<T>.GetPinnableReference, whose netstandard2.1 signature (ref readonly) Mono's
+            // corlib, and so Unity's, does not have (MissingMethodException). A default span pins to null.
+            fixed (int* d = &MemoryMarshal.GetReference(discrete))
+            fixed (float* c = &MemoryMarshal.GetReference(continuous))
             {
                 VerveException.ThrowIfFailed(NativeMethods.verve_agent_update(handle, reward,
                     d, (uint)discrete.Length, c, (uint)continuous.Length, dt, out action));
@@ -133,7 +139,7 @@ namespace Verve
         public float[] SampleValues(ValueAxis axis, ReadOnlySpan<int> baseDiscrete, ReadOnlySpan<float> baseContinuous)
         {
             Span<ValueAxis> axes = stackalloc ValueAxis[] { axis };
-            return SampleValues(axes, baseDiscrete, baseContinuous);
+            return SampleValues(axes, axis.Samples, baseDiscrete, baseContinuous);
         }
 
         /// <summary>V over two swept sensors, the other sensors held at the base observation.</summary>
@@ -141,7 +147,7 @@ namespace Verve
         public float[] SampleValues(ValueAxis axis0, ValueAxis axis1, ReadOnlySpan<int> baseDiscrete, ReadOnlySpan<float> baseContinuous)
         {
             Span<ValueAxis> axes = stackalloc ValueAxis[] { axis0, axis1 };
-            return SampleValues(axes, baseDiscrete, baseContinuous);
+            return SampleValues(axes, (long)axis0.Samples * axis1.Samples, baseDiscrete, baseContinuous);
         }
 
         /// <summary>V over one or two swept sensors into the start of <paramref name="destination"/>, which must
@@ -151,20 +157,20 @@ namespace Verve
             ReadOnlySpan<float> baseContinuous, Span<float> destination)
         {
             AgentHandle handle = Handle;
-            fixed (ValueAxis* a = axes)
-            fixed (int* d = baseDiscrete)
-            fixed (float* c = baseContinuous)
-            fixed (float* o = destination)
+            fixed (ValueAxis* a = &MemoryMarshal.GetReference(axes))
+            fixed (int* d = &MemoryMarshal.GetReference(baseDiscrete))
+            fixed (float* c = &MemoryMarshal.GetReference(baseContinuous))
+            fixed (float* o = &MemoryMarshal.GetReference(destination))
             {
                 VerveException.ThrowIfFailed(NativeMethods.verve_agent_sample_values(handle, a, (uint)axes.Length,
                     d, (uint)baseDiscrete.Length, c, (uint)baseContinuous.Length, o, (uint)destination.Length));
             }
         }
 
-        private float[] SampleValues(ReadOnlySpan<ValueAxis> axes, ReadOnlySpan<int> baseDiscrete, ReadOnlySpan<float> baseContinuous)
+        // The count comes from the caller: reading a ReadOnlySpan's elements (indexer, foreach) fails on
+        // Mono for the same reason as GetPinnableReference (see Update).
+        private float[] SampleValues(ReadOnlySpan<ValueAxis> axes, long count, ReadOnlySpan<int> baseDiscrete, ReadOnlySpan<float> baseContinuous)
         {
-            long count = 1;
-            foreach (ValueAxis axis in axes) count *= axis.Samples;
             if (count > int.MaxValue) throw new ArgumentOutOfRangeException(nameof(axes), count, "too many samples");
             var values = new float[count];
             SampleValues(axes, baseDiscrete, baseContinuous, values);
@@ -214,7 +220,7 @@ namespace Verve
         {
             VerveLibrary.EnsureCompatible();
             IntPtr agent;
-            fixed (byte* d = data)
+            fixed (byte* d = &MemoryMarshal.GetReference(data))
                 VerveException.ThrowIfFailed(NativeMethods.verve_agent_load_memory(d, (UIntPtr)data.Length, out agent));
             return new Agent(agent);
         }

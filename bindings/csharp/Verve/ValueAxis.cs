@@ -1,3 +1,5 @@
+// Nullable annotations on: Unity compiles these sources without the .csproj that enables them.
+#nullable enable
 using System;
 using System.Runtime.InteropServices;
 

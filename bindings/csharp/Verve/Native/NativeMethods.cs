@@ -8,7 +8,13 @@ namespace Verve.Native
     // freed by another thread while a call runs.
     internal static unsafe class NativeMethods
     {
+#if VERVE_STATIC_LINK
+        // IL2CPP platforms that link native code into the game itself (iOS, WebGL): the symbols are
+        // looked up in the executable. Define VERVE_STATIC_LINK for those platforms (docs/csharp.md).
+        private const string Library = "__Internal";
+#else
         private const string Library = "verve";
+#endif
 
         [DllImport(Library, CallingConvention = CallingConvention.Cdecl)]
         internal static extern uint verve_version();

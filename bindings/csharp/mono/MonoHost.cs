@@ -1,0 +1,302 @@
+// Calls every public member of the packed Verve.dll under Mono, the runtime Unity's scripting is built
+// on, against a freshly built libverve. Compiled by Mono's own compiler (mcs, C# 7) against the
+// netstandard facade, so a BCL member the binding uses but Mono lacks fails here with
+// MissingMethodException, as it would in a Unity game. Run by run.sh.
+//
+// The list of calls is Exercise() below. The run fails when a public member of Verve.dll has no Check
+// naming it, or a Check names a member that does not exist: a new public member gets a Check here.
+using System;
+using System.Collections.Generic;
+using System.IO;
+using System.Linq;
+using System.Reflection;
+using Verve;
+
+static class MonoHost
+{
+    static readonly HashSet<string> Checked = new HashSet<string>();
+    static int s_failures;
+
+    static int Main()
+    {
+        string runtime = RuntimeName();
+        Console.WriteLine("runtime: " + runtime);
+        if (!runtime.StartsWith("Mono", StringComparison.Ordinal)) return 2;
+        Exercise();
+        CheckCoverage();
+        Console.WriteLine(s_failures == 0 ? "mono host: all checks passed" : "mono host: " + s_failures + " check(s) failed");
+        return s_failures == 0 ? 0 : 1;
+    }
+
+    // Shared by the checks, in order: the options, the agent made from them, its save.
+    static AgentOptions s_options;
+    static Agent s_agent;
+    static byte[] s_save;
+
+    static void Exercise()
+    {
+        Check("VerveLibrary.get_NativeVersionNumber(); VerveLibrary.get_NativeVersion(); VerveLibrary.get_BindingVersion(); VerveLibrary.IsCompatible(Int32)", () =>
+        {
+            Require(VerveLibrary.NativeVersionNumber == VerveLibrary.BindingVersionNumber, "native and binding versions differ");
+            Require(VerveLibrary.NativeVersion.Equals(VerveLibrary.BindingVersion), "Version objects differ");
+            Require(VerveLibrary.IsCompatible(VerveLibrary.NativeVersionNumber), "the loaded library is not compatible");
+            Require(!VerveLibrary.IsCompatible(0x010000), "1.0.0 reported compatible");
+        });
+
+        Check("AgentOptions..ctor(); AgentOptions.AddDiscreteSensor(Int32); AgentOptions.AddContinuousSensor(Boolean); " +
+              "AgentOptions.ClearSensors(); AgentOptions.get_DiscreteSensors(); AgentOptions.get_ContinuousSensorCircular()", () =>
+        {
+            var o = new AgentOptions().AddDiscreteSensor(4).AddContinuousSensor(true);
+            Require(o.DiscreteSensors.SequenceEqual(new[] { 4 }) && o.ContinuousSensorCircular.SequenceEqual(new[] { true }), "sensors not recorded");
+            o.ClearSensors();
+            Require(o.DiscreteSensors.Count == 0 && o.ContinuousSensorCircular.Count == 0, "ClearSensors left sensors");
+            Expect<ArgumentOutOfRangeException>(() => o.AddDiscreteSensor(-1));
+            for (int i = 0; i < AgentOptions.MaxContinuousSensors; i++) o.AddContinuousSensor();
+            Expect<InvalidOperationException>(() => o.AddContinuousSensor());
+        });
+
+        // Every setter with a value other than the default, every getter read back through the library.
+        Check("AgentOptions.set_Actions(Int32); AgentOptions.set_Resolution(Int32); AgentOptions.set_RbfAllocation(RbfAllocation); " +
+              "AgentOptions.set_TauValue(Single); AgentOptions.set_TauDiscount(Single); AgentOptions.set_TauEligibility(Single); " +
+              "AgentOptions.set_PolicyMultiplier(Single); AgentOptions.set_TraceThreshold(Single); AgentOptions.set_Seed(UInt64); " +
+              "AgentOptions.set_Planning(Boolean); AgentOptions.set_TauModel(Single); AgentOptions.set_MaxPlanningSteps(Int32); " +
+              "AgentOptions.set_PlanningUncertaintyThreshold(Single); AgentOptions.set_Curiosity(Curiosity); " +
+              "AgentOptions.set_CuriosityFactor(Single); AgentOptions.set_PlanningAccumulatesUncertainty(Boolean); " +
+              "AgentOptions.set_LearnFromRealSteps(Boolean); AgentOptions.set_DiscretePrediction(DiscretePrediction); " +
+              "Agent..ctor(AgentOptions); Agent.get_Options(); " +
+              "AgentOptions.get_Actions(); AgentOptions.get_Resolution(); AgentOptions.get_RbfAllocation(); " +
+              "AgentOptions.get_TauValue(); AgentOptions.get_TauDiscount(); AgentOptions.get_TauEligibility(); " +
+              "AgentOptions.get_PolicyMultiplier(); AgentOptions.get_TraceThreshold(); AgentOptions.get_Seed(); " +
+              "AgentOptions.get_Planning(); AgentOptions.get_TauModel(); AgentOptions.get_MaxPlanningSteps(); " +
+              "AgentOptions.get_PlanningUncertaintyThreshold(); AgentOptions.get_Curiosity(); AgentOptions.get_CuriosityFactor(); " +
+              "AgentOptions.get_PlanningAccumulatesUncertainty(); AgentOptions.get_LearnFromRealSteps(); AgentOptions.get_DiscretePrediction()", () =>
+        {
+            s_options = new AgentOptions
+            {
+                Actions = 3, Resolution = 8, RbfAllocation = RbfAllocation.Full, TauValue = 0.2f, TauDiscount = 0.9f,
+                TauEligibility = 0.15f, PolicyMultiplier = 4f, TraceThreshold = 0.02f, Seed = 7, Planning = true,
+                TauModel = 0.05f, MaxPlanningSteps = 4, PlanningUncertaintyThreshold = 0.4f, Curiosity = Curiosity.Novelty,
+                CuriosityFactor = 2f, PlanningAccumulatesUncertainty = false, LearnFromRealSteps = false,
+                DiscretePrediction = DiscretePrediction.Ordinal,
+            }.AddDiscreteSensor(2).AddContinuousSensor(true);
+            s_agent = new Agent(s_options);
+            AgentOptions back = s_agent.Options;
+            Require(back.Actions == 3 && back.Resolution == 8 && back.RbfAllocation == RbfAllocation.Full &&
+                    back.TauValue == 0.2f && back.TauDiscount == 0.9f && back.TauEligibility == 0.15f &&
+                    back.PolicyMultiplier == 4f && back.TraceThreshold == 0.02f && back.Seed == 7 && back.Planning &&
+                    back.TauModel == 0.05f && back.MaxPlanningSteps == 4 && back.PlanningUncertaintyThreshold == 0.4f &&
+                    back.Curiosity == Curiosity.Novelty && back.CuriosityFactor == 2f && !back.PlanningAccumulatesUncertainty &&
+                    !back.LearnFromRealSteps && back.DiscretePrediction == DiscretePrediction.Ordinal &&
+                    back.DiscreteSensors.SequenceEqual(new[] { 2 }) && back.ContinuousSensorCircular.SequenceEqual(new[] { true }),
+                    "Agent.Options differs from the options it was made with");
+        });
+
+        Check("Agent.Update(Single, Int32[], Single[], Single); Agent.Update(Single, ReadOnlySpan<Int32>, ReadOnlySpan<Single>, Single); " +
+              "Agent.EndEpisode(Single); Agent.ResetShortTermMemory(); Agent.get_Value(); Agent.get_TdError(); Agent.get_RbfCount()", () =>
+        {
+            RunTrials(s_agent, 3);
+            Require(s_agent.RbfCount > 0, "no RBFs after updates");
+            Require(!float.IsNaN(s_agent.Value) && !float.IsNaN(s_agent.TdError), "NaN value or TD error");
+            s_agent.ResetShortTermMemory();
+        });
+
+        Check("Agent.get_Stats(); AgentStats.get_Steps(); AgentStats.get_RbfCount(); AgentStats.get_LiveTraces(); AgentStats.get_Value(); " +
+              "AgentStats.get_TdError(); AgentStats.get_ModelError(); AgentStats.get_PredictedUncertainty(); " +
+              "AgentStats.get_PlanningSteps(); AgentStats.get_CuriosityReward(); AgentStats.ToString()", () =>
+        {
+            AgentStats s = s_agent.Stats;
+            Require(s.Steps == 3 * StepsPerTrial && s.RbfCount == s_agent.RbfCount, "stats disagree with the run: " + s);
+            Require(s.LiveTraces >= 0 && s.PlanningSteps >= 0 && !float.IsNaN(s.Value + s.TdError + s.ModelError +
+                    s.PredictedUncertainty + s.CuriosityReward), "bad stats: " + s);
+            Require(s.ToString().StartsWith("steps=" + s.Steps, StringComparison.Ordinal), "AgentStats.ToString: " + s);
+        });
+
+        Check("Agent.get_Learning(); Agent.set_Learning(Boolean)", () =>
+        {
+            Require(s_agent.Learning, "a new agent does not learn");
+            s_agent.Learning = false;
+            Require(!s_agent.Learning, "Learning = false ignored");
+            s_agent.Learning = true;
+        });
+
+        Check("ValueAxis.Continuous(Int32, Int32); ValueAxis.Discrete(Int32, Int32); ValueAxis.get_Kind(); ValueAxis.get_Index(); " +
+              "ValueAxis.get_Samples(); ValueAxis.Equals(ValueAxis); ValueAxis.Equals(Object); ValueAxis.GetHashCode(); ValueAxis.ToString()", () =>
+        {
+            ValueAxis c = ValueAxis.Continuous(0, 5), d = ValueAxis.Discrete(0, 2);
+            Require(c.Kind == SensorKind.Continuous && c.Index == 0 && c.Samples == 5 && d.Kind == SensorKind.Discrete, "axis fields");
+            Require(c.Equals(ValueAxis.Continuous(0, 5)) && !c.Equals((object)d) && c.GetHashCode() == ValueAxis.Continuous(0, 5).GetHashCode(),
+                    "axis equality");
+            Require(c.ToString().Length > 0, "axis ToString");
+            Expect<ArgumentOutOfRangeException>(() => ValueAxis.Continuous(0, 0));
+        });
+
+        Check("Agent.SampleValues(ValueAxis, ReadOnlySpan<Int32>, ReadOnlySpan<Single>); " +
+              "Agent.SampleValues(ValueAxis, ValueAxis, ReadOnlySpan<Int32>, ReadOnlySpan<Single>); " +
+              "Agent.SampleValues(ReadOnlySpan<ValueAxis>, ReadOnlySpan<Int32>, ReadOnlySpan<Single>, Span<Single>)", () =>
+        {
+            float[] one = s_agent.SampleValues(ValueAxis.Continuous(0, 9), new[] { 1 }, new[] { 0f });
+            float[] two = s_agent.SampleValues(ValueAxis.Continuous(0, 9), ValueAxis.Discrete(0, 2), new[] { 0 }, new[] { 0f });
+            var into = new float[18];
+            s_agent.SampleValues(new[] { ValueAxis.Continuous(0, 9), ValueAxis.Discrete(0, 2) }, new[] { 0 }, new[] { 0f }, into);
+            Require(one.Length == 9 && two.Length == 18 && into.SequenceEqual(two), "sampled values disagree");
+            Require(one.SequenceEqual(two.Skip(9)), "the one-axis sweep at discrete 1 differs from the two-axis sweep's second row");
+            Expect<VerveException>(() => s_agent.SampleValues(new[] { ValueAxis.Continuous(0, 9) }, new[] { 0 }, new[] { 0f }, new float[8]));
+        });
+
+        Check("Agent.SaveToBytes(); Agent.LoadFromBytes(Byte[]); Agent.LoadFromBytes(ReadOnlySpan<Byte>)", () =>
+        {
+            s_save = s_agent.SaveToBytes();
+            using (Agent fromArray = Agent.LoadFromBytes(s_save))
+            using (Agent fromSpan = Agent.LoadFromBytes(new ReadOnlySpan<byte>(s_save)))
+            {
+                RequireSameActions(fromArray, fromSpan);
+            }
+            VerveException e = Expect<VerveException>(() => Agent.LoadFromBytes(s_save.Take(s_save.Length / 2).ToArray()));
+            Require(e.Code == ResultCode.Format, "a truncated save gave " + e.Code);
+        });
+
+        Check("Agent.Save(String); Agent.Load(String)", () =>
+        {
+            string path = Path.Combine(Path.GetTempPath(), "verve-mono-host-" + Guid.NewGuid().ToString("N") + "-ä.xml");
+            try
+            {
+                s_agent.Save(path);
+                using (Agent loaded = Agent.Load(path))
+                using (Agent fromBytes = Agent.LoadFromBytes(s_save))
+                {
+                    RequireSameActions(loaded, fromBytes);
+                }
+            }
+            finally { File.Delete(path); }
+            Require(Expect<VerveException>(() => Agent.Load(path)).Code == ResultCode.Io, "a missing file is not an Io error");
+        });
+
+        Check("VerveException..ctor(ResultCode, String); VerveException.get_Code()", () =>
+        {
+            var mine = new VerveException(ResultCode.Internal, "message");
+            Require(mine.Code == ResultCode.Internal && mine.Message == "message", "VerveException fields");
+            // A native failure: the message is read with Marshal.PtrToStringUTF8 on the failing thread.
+            VerveException e = Expect<VerveException>(() => new Agent(new AgentOptions { Actions = 0 }));
+            Require(e.Code == ResultCode.InvalidArgument && e.Message.StartsWith("VERVE_ERROR_INVALID_ARGUMENT: ", StringComparison.Ordinal) &&
+                    e.Message.Contains("verve_agent_create"), "native error message: " + e.Message);
+            int steps = (int)s_agent.Stats.Steps;
+            Expect<VerveException>(() => s_agent.Update(float.NaN, new[] { 0 }, new[] { 0f }, 0.1f));
+            Expect<VerveException>(() => s_agent.Update(0f, null, new[] { 0f }, 0.1f));
+            Require(s_agent.Stats.Steps == steps, "a refused update changed the agent");
+        });
+
+        Check("Agent.Dispose(); Agent.get_IsDisposed()", () =>
+        {
+            Require(!s_agent.IsDisposed, "disposed too early");
+            s_agent.Dispose();
+            s_agent.Dispose();  // twice is harmless
+            Require(s_agent.IsDisposed, "IsDisposed after Dispose");
+            Expect<ObjectDisposedException>(() => s_agent.Update(0f, new[] { 0 }, new[] { 0f }, 0.1f));
+            Expect<ObjectDisposedException>(() => { var unused = s_agent.Stats; });
+        });
+    }
+
+    const int StepsPerTrial = 20;
+
+    // A short walk on a ring: the discrete sensor says which half, the circular sensor where.
+    static void RunTrials(Agent agent, int trials)
+    {
+        float position = 0f;
+        Span<float> continuous = stackalloc float[1];
+        Span<int> discrete = stackalloc int[1];
+        for (int trial = 0; trial < trials; trial++)
+        {
+            for (int step = 0; step < StepsPerTrial; step++)
+            {
+                float reward = position > 0.5f ? 1f : 0f;
+                int action = (step & 1) == 0
+                    ? agent.Update(reward, new[] { position > 0f ? 1 : 0 }, new[] { position }, 0.1f)
+                    : SpanUpdate(agent, reward, discrete, continuous, position);
+                Require(action >= 0 && action < 3, "action out of range: " + action);
+                position = Math.Max(-1f, Math.Min(1f, position + (action - 1) * 0.1f));
+            }
+            agent.EndEpisode(position > 0.5f ? 1f : 0f);
+        }
+    }
+
+    static int SpanUpdate(Agent agent, float reward, Span<int> discrete, Span<float> continuous, float position)
+    {
+        discrete[0] = position > 0f ? 1 : 0;
+        continuous[0] = position;
+        return agent.Update(reward, discrete, continuous, 0.1f);
+    }
+
+    // Two agents loaded from the same save act alike on the same observations.
+    static void RequireSameActions(Agent a, Agent b)
+    {
+        for (int i = 0; i < 50; i++)
+        {
+            float x = (float)Math.Sin(i * 0.7);
+            int[] d = { i % 2 };
+            float[] c = { x };
+            Require(a.Update(0.1f, d, c, 0.1f) == b.Update(0.1f, d, c, 0.1f), "loaded agents act differently at step " + i);
+        }
+    }
+
+    static void Check(string members, Action body)
+    {
+        try
+        {
+            body();
+            foreach (string m in members.Split(';')) Checked.Add(m.Trim());
+            Console.WriteLine("ok    " + members);
+        }
+        catch (Exception e)
+        {
+            s_failures++;
+            Console.WriteLine("FAIL  " + members + "\n      " + e.ToString().Replace("\n", "\n      "));
+        }
+    }
+
+    static void Require(bool condition, string what)
+    {
+        if (!condition) throw new Exception(what);
+    }
+
+    static T Expect<T>(Action call) where T : Exception
+    {
+        try { call(); }
+        catch (T e) { return e; }
+        throw new Exception("expected " + typeof(T).Name);
+    }
+
+    // Every public constructor, method and property accessor of Verve.dll must be named by a Check.
+    static void CheckCoverage()
+    {
+        var members = new HashSet<string>();
+        foreach (Type type in typeof(Agent).Assembly.GetExportedTypes().Where(t => !t.IsEnum))
+        {
+            const BindingFlags flags = BindingFlags.Public | BindingFlags.Instance | BindingFlags.Static | BindingFlags.DeclaredOnly;
+            foreach (MethodBase m in type.GetConstructors(flags).Cast<MethodBase>().Concat(type.GetMethods(flags)))
+                members.Add(type.Name + "." + m.Name + "(" + string.Join(", ", m.GetParameters().Select(p => TypeName(p.ParameterType))) + ")");
+        }
+        foreach (string m in members.Except(Checked).OrderBy(m => m))
+        {
+            s_failures++;
+            Console.WriteLine("FAIL  not exercised under Mono: " + m + " (add a Check in MonoHost.cs)");
+        }
+        foreach (string m in Checked.Except(members).OrderBy(m => m))
+        {
+            s_failures++;
+            Console.WriteLine("FAIL  a Check names no public member: " + m);
+        }
+        Console.WriteLine("coverage: " + members.Intersect(Checked).Count() + " of " + members.Count + " public members");
+    }
+
+    static string TypeName(Type t) =>
+        t.IsGenericType
+            ? t.Name.Substring(0, t.Name.IndexOf('`')) + "<" + string.Join(", ", t.GetGenericArguments().Select(TypeName)) + ">"
+            : t.Name;
+
+    static string RuntimeName()
+    {
+        Type mono = Type.GetType("Mono.Runtime");
+        MethodInfo name = mono == null ? null : mono.GetMethod("GetDisplayName", BindingFlags.NonPublic | BindingFlags.Static);
+        return name == null ? "not Mono" : "Mono " + name.Invoke(null, null);
+    }
+}

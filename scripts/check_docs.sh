@@ -1,0 +1,90 @@
+#!/usr/bin/env bash
+# Walks the commands that README.md and docs/ tell a reader to type, from the repository root, after
+# ./scripts/build.sh. Each command below must appear word for word in its document (so a doc that
+# changes a command fails here until this list follows it), then runs and must succeed.
+# Documented ctest commands are listed (-N) and must select tests: test.sh's gating run, just before
+# this, ran every one of them. Not run: ./scripts/test.sh and ./scripts/demo.sh (CI runs test.sh,
+# which runs this), full-size experiments and benchmarks (minutes to hours: their programs run with
+# `list` or are checked to exist), the cart-pole run to 1800 s, and LÖVE's window (the same game
+# runs headless, and under Xvfb when xvfb-run is installed). About 1 minute on 2 cores after a build.
+set -euo pipefail
+cd "$(dirname "$0")/.."
+scratch=$(mktemp -d)
+trap 'rm -rf "$scratch"' EXIT
+# Side effects stay out of the reader's places: LÖVE's save directory, and out/ (gitignored).
+export XDG_DATA_HOME="$scratch/data" XDG_RUNTIME_DIR="$scratch"
+had_out=$([ -e out ] && echo yes || echo no)
+failures=0
+
+# in_doc FILE COMMAND: fails the check unless FILE contains COMMAND verbatim.
+in_doc() {
+  grep -qF -- "$2" "$1" && return 0
+  echo "check_docs: $1 no longer contains: $2" >&2
+  failures=$((failures + 1))
+  return 1
+}
+
+# doc FILE COMMAND [RUN]: COMMAND is in FILE and succeeds when run from the repository root; RUN,
+# if given, is what runs instead: COMMAND with a flag that keeps it short or read-only.
+doc() {
+  in_doc "$1" "$2" || return 0
+  local run=${3:-$2}
+  echo "== $1: $run"
+  if ! bash -c "$run" >"$scratch/log" 2>&1; then
+    tail -n 30 "$scratch/log"
+    echo "check_docs: FAILED ($1): $run" >&2
+    failures=$((failures + 1))
+  fi
+}
+
+in_doc README.md 'cmake --preset release && cmake --build --preset release && ctest --preset release'
+doc README.md 'cmake --preset release'
+doc README.md 'cmake --build --preset release'
+# ctest_doc FILE COMMAND: a documented ctest command selects at least one test (ctest -N).
+ctest_doc() { doc "$1" "$2" "$2 -N | grep -q 'Total Tests: [1-9]'"; }
+
+ctest_doc README.md 'ctest --preset release'
+ctest_doc README.md 'ctest --preset known-gaps'
+ctest_doc README.md 'ctest --test-dir build -L known_gap'
+
+doc docs/lua.md 'cmake -S . -B build -DCMAKE_BUILD_TYPE=Release'
+doc docs/lua.md 'cmake --build build -j2'
+ctest_doc docs/lua.md "ctest --test-dir build -R '^lua\.'"
+ctest_doc docs/lua.md "ctest --test-dir build -R '^love\.'"
+doc docs/lua.md 'LUA_CPATH="build/lua/5.4/?.so" lua5.4 samples/lua/train_hot_plate.lua'
+doc docs/lua.md 'LUA_CPATH="build/lua/jit/?.so" luajit samples/lua/train_hot_plate.lua --continuous'
+# Shipping the LÖVE game, step by step.
+doc docs/lua.md './scripts/build.sh verve_lua_5.4 verve_lua_jit'
+doc docs/lua.md 'cmake --install build --prefix build/stage'
+doc docs/lua.md 'mkdir -p build/love-npcs'
+doc docs/lua.md 'cp build/stage/lib/lua/5.1/verve.so build/stage/lib/libverve.so.0 build/love-npcs/'
+doc docs/lua.md '(cd samples/love && cmake -E tar cf ../../build/love-npcs/verve-npcs.love --format=zip main.lua conf.lua)'
+doc docs/lua.md 'readelf -d build/src/capi/libverve.so.0'
+in_doc docs/lua.md 'love build/love-npcs/verve-npcs.love '   # the window; the headless run below
+doc docs/lua.md 'love build/love-npcs/verve-npcs.love --headless --minutes 20 --fresh'
+if command -v xvfb-run >/dev/null; then
+  doc docs/lua.md 'xvfb-run -a love build/love-npcs/verve-npcs.love --minutes 20 --fresh --screenshot npcs.png'
+fi
+
+doc docs/scenes.md './scripts/build.sh verve-demo'
+doc docs/scenes.md 'build/samples/runner/verve-demo list'
+doc docs/scenes.md 'build/samples/runner/verve-demo run npc-arena --trials 10 --out out'
+doc docs/scenes.md 'build/samples/runner/verve-demo run maze2 --runs 10 --out out'
+in_doc docs/scenes.md 'build/samples/runner/verve-demo run pendulum --runs 10 --value-at 1,5,20,100 --out out'
+in_doc docs/scenes.md 'build/samples/runner/verve-demo run cart-pole --seed 1 --out out'
+
+doc docs/performance.md './scripts/build.sh verve_bench'
+doc docs/performance.md 'build/bench/verve_bench --benchmark_repetitions=3 --benchmark_report_aggregates_only=true' \
+  'build/bench/verve_bench --benchmark_list_tests'
+doc docs/experiments.md 'cmake -S . -B build -DCMAKE_BUILD_TYPE=Release && cmake --build build -j2'
+doc docs/experiments.md 'build/samples/tasks/verve-experiments list'
+ctest_doc docs/experiments.md 'ctest --test-dir build -L learning'
+
+ctest_doc docs/tuning.md "ctest --test-dir build -R '^(love\.|NpcArenaLearning|HotPlateLearning|CartPoleLearning|PendulumLearning|PatrolRecipe)'"
+
+[ "$had_out" = yes ] || rm -rf out
+if [ "$failures" -gt 0 ]; then
+  echo "check_docs: $failures documented command(s) failed or are no longer documented" >&2
+  exit 1
+fi
+echo "check_docs: every walked command works"

@@ -1,0 +1,63 @@
+// What every fuzz target does with an agent it managed to create or load: the calls a game makes
+// every frame, driven by the fuzzer's remaining bytes, checking the invariants the C ABI promises.
+#pragma once
+#include <cstdlib>
+#include <vector>
+
+#include "fuzz_input.hpp"
+
+namespace verve_fuzz {
+
+// The library broke a promise: abort so libFuzzer records the input.
+#define VERVE_FUZZ_CHECK(condition) \
+    do {                            \
+        if (!(condition)) std::abort(); \
+    } while (0)
+
+// Saves to memory with the two-call pattern, loads the bytes back and checks the copy saves
+// to the same bytes. Returns the loaded copy (or NULL if the save was refused).
+inline verve_agent* roundTrip(const verve_agent* agent) {
+    size_t size = 0;
+    if (verve_agent_save_memory(agent, nullptr, &size) != VERVE_OK) return nullptr;
+    std::vector<char> bytes(size);
+    size_t written = size;
+    VERVE_FUZZ_CHECK(verve_agent_save_memory(agent, bytes.data(), &written) == VERVE_OK && written == size);
+    verve_agent* copy = nullptr;
+    VERVE_FUZZ_CHECK(verve_agent_load_memory(bytes.data(), bytes.size(), &copy) == VERVE_OK && copy != nullptr);
+    size_t again = 0;
+    VERVE_FUZZ_CHECK(verve_agent_save_memory(copy, nullptr, &again) == VERVE_OK && again == size);
+    std::vector<char> bytesAgain(again);
+    VERVE_FUZZ_CHECK(verve_agent_save_memory(copy, bytesAgain.data(), &again) == VERVE_OK && bytesAgain == bytes);
+    return copy;
+}
+
+// A bounded number of updates with the agent's own shape (and some bad inputs, which must be
+// refused without changing the step count).
+inline void play(verve_agent* agent, FuzzedDataProvider& in, int maxSteps) {
+    verve_agent_desc d;
+    verve_agent_desc_init(&d, sizeof d);
+    VERVE_FUZZ_CHECK(verve_agent_get_desc(agent, &d) == VERVE_OK);
+    const int steps = in.ConsumeIntegralInRange<int>(0, maxSteps);
+    for (int i = 0; i < steps && in.remaining_bytes() > 0; ++i) {
+        const Observation o = anyObservation(in, d);
+        verve_agent_stats before{};
+        before.struct_size = sizeof before;
+        VERVE_FUZZ_CHECK(verve_agent_get_stats(agent, &before) == VERVE_OK);
+        uint32_t action = UINT32_MAX;
+        const float reward = anyFloat(in, -1.5f, 1.5f);
+        const float dt = anyFloat(in, 0.001f, 1.0f);
+        const verve_result r = verve_agent_update(agent, reward, o.discrete, o.numDiscrete, o.continuous, o.numContinuous, dt, &action);
+        VERVE_FUZZ_CHECK((r == VERVE_OK) == (verve_last_error()[0] == '\0'));  // read before the next call clears it
+        verve_agent_stats after{};
+        after.struct_size = sizeof after;
+        VERVE_FUZZ_CHECK(verve_agent_get_stats(agent, &after) == VERVE_OK);
+        if (r == VERVE_OK) {
+            VERVE_FUZZ_CHECK(action < d.num_actions && after.steps == before.steps + 1);
+        } else {
+            VERVE_FUZZ_CHECK(after.steps == before.steps);
+        }
+        if (in.ConsumeIntegralInRange<int>(0, 15) == 0) verve_agent_end_episode(agent, anyFloat(in, -1.0f, 1.0f));
+    }
+}
+
+}  // namespace verve_fuzz

@@ -1,0 +1,93 @@
+// Turns fuzzer bytes into the inputs a careless or hostile host could pass to the C ABI: mostly
+// plausible values (so the fuzzer reaches deep states), sometimes absurd ones (NaN, infinities,
+// denormals, huge counts, wrong sizes), so every check sits on the path of some input.
+#pragma once
+#include <cmath>
+#include <cstdint>
+#include <limits>
+
+#include <fuzzer/FuzzedDataProvider.h>
+
+#include "verve_c.h"
+
+namespace verve_fuzz {
+
+// A float that is usually in [lo, hi] and sometimes anything at all.
+inline float anyFloat(FuzzedDataProvider& in, float lo, float hi) {
+    switch (in.ConsumeIntegralInRange<int>(0, 15)) {
+        case 0: return std::numeric_limits<float>::quiet_NaN();
+        case 1: return in.ConsumeBool() ? INFINITY : -INFINITY;
+        case 2: return std::numeric_limits<float>::denorm_min() * static_cast<float>(in.ConsumeIntegral<int8_t>());
+        case 3: return in.ConsumeFloatingPoint<float>();  // any finite float, huge ones included
+        case 4: return 0.0f;
+        default: return in.ConsumeFloatingPointInRange<float>(lo, hi);
+    }
+}
+
+// A count that is usually small and sometimes at the edge of its type.
+inline uint32_t anyCount(FuzzedDataProvider& in, uint32_t typicalMax) {
+    switch (in.ConsumeIntegralInRange<int>(0, 15)) {
+        case 0: return 0;
+        case 1: return UINT32_MAX;
+        case 2: return in.ConsumeIntegral<uint32_t>();
+        case 3: return 1u << in.ConsumeIntegralInRange<int>(0, 31);
+        default: return in.ConsumeIntegralInRange<uint32_t>(1, typicalMax);
+    }
+}
+
+inline verve_agent_desc anyDescriptor(FuzzedDataProvider& in) {
+    verve_agent_desc d;
+    verve_agent_desc_default(&d);
+    if (in.ConsumeIntegralInRange<int>(0, 31) == 0) d.struct_size = in.ConsumeIntegral<uint32_t>();
+    d.num_discrete_sensors = in.ConsumeIntegralInRange<uint32_t>(0, 3);
+    if (in.ConsumeIntegralInRange<int>(0, 31) == 0) d.num_discrete_sensors = anyCount(in, 20);
+    for (uint32_t i = 0; i < VERVE_MAX_DISCRETE_SENSORS; ++i) d.discrete_sensor_values[i] = anyCount(in, 6);
+    d.num_continuous_sensors = in.ConsumeIntegralInRange<uint32_t>(0, 3);
+    if (in.ConsumeIntegralInRange<int>(0, 31) == 0) d.num_continuous_sensors = anyCount(in, 20);
+    for (uint32_t i = 0; i < VERVE_MAX_CONTINUOUS_SENSORS; ++i) d.continuous_sensor_circular[i] = in.ConsumeIntegral<uint8_t>() % 3;
+    d.resolution = anyCount(in, 10);
+    d.num_actions = anyCount(in, 8);
+    d.rbf_allocation = in.ConsumeIntegralInRange<uint32_t>(0, 2);
+    d.tau_value = anyFloat(in, 0.0f, 2.0f);
+    d.tau_discount = anyFloat(in, 0.0f, 5.0f);
+    d.tau_eligibility = anyFloat(in, 0.0f, 2.0f);
+    d.policy_multiplier = anyFloat(in, 0.0f, 20.0f);
+    d.trace_threshold = anyFloat(in, 0.0f, 0.5f);
+    d.seed = in.ConsumeIntegral<uint64_t>();
+    d.planning = in.ConsumeIntegralInRange<uint32_t>(0, 2);
+    d.tau_model = anyFloat(in, 0.0f, 2.0f);
+    d.max_planning_steps = anyCount(in, 20);
+    d.planning_uncertainty_threshold = anyFloat(in, 0.0f, 2.0f);
+    d.curiosity = in.ConsumeIntegralInRange<uint32_t>(0, 3);
+    d.curiosity_factor = anyFloat(in, 0.0f, 10.0f);
+    d.planning_accumulates_uncertainty = in.ConsumeIntegralInRange<uint32_t>(0, 2);
+    d.learn_from_real_steps = in.ConsumeIntegralInRange<uint32_t>(0, 2);
+    d.discrete_prediction = in.ConsumeIntegralInRange<uint32_t>(0, 2);
+    return d;
+}
+
+// Observation arrays sized for any agent: counts are chosen separately (and may be wrong).
+struct Observation {
+    int32_t discrete[VERVE_MAX_DISCRETE_SENSORS + 4] = {};
+    float continuous[VERVE_MAX_CONTINUOUS_SENSORS + 4] = {};
+    uint32_t numDiscrete = 0;
+    uint32_t numContinuous = 0;
+};
+
+// Usually the agent's own shape with in-range values; sometimes wrong counts or values.
+inline Observation anyObservation(FuzzedDataProvider& in, const verve_agent_desc& d) {
+    Observation o;
+    const bool wrongCounts = in.ConsumeIntegralInRange<int>(0, 15) == 0;
+    o.numDiscrete = wrongCounts ? in.ConsumeIntegralInRange<uint32_t>(0, VERVE_MAX_DISCRETE_SENSORS + 4) : d.num_discrete_sensors;
+    o.numContinuous = wrongCounts ? in.ConsumeIntegralInRange<uint32_t>(0, VERVE_MAX_CONTINUOUS_SENSORS + 4) : d.num_continuous_sensors;
+    for (uint32_t i = 0; i < VERVE_MAX_DISCRETE_SENSORS + 4; ++i) {
+        const uint32_t values = i < VERVE_MAX_DISCRETE_SENSORS ? d.discrete_sensor_values[i] : 1;
+        o.discrete[i] = in.ConsumeIntegralInRange<int>(0, 31) == 0
+                            ? in.ConsumeIntegral<int32_t>()
+                            : static_cast<int32_t>(in.ConsumeIntegralInRange<uint32_t>(0, values > 0 ? values - 1 : 0));
+    }
+    for (float& v : o.continuous) v = anyFloat(in, -1.2f, 1.2f);
+    return o;
+}
+
+}  // namespace verve_fuzz

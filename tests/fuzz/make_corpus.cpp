@@ -1,0 +1,82 @@
+// Writes the seed corpus of the load targets: a valid memory save of every kind of agent (discrete,
+// continuous, circular, full lattice, planning with each prediction, each curiosity, learning off),
+// each after a few updates so its RBFs, weights and model hold real values. Small on purpose:
+// libFuzzer mutates small inputs faster.
+//   verve_fuzz_corpus <dir>
+#include <cstdio>
+#include <string>
+#include <vector>
+
+#include "verve_c.h"
+
+namespace {
+
+struct Kind {
+    const char* name;
+    void (*shape)(verve_agent_desc&);
+};
+
+const Kind kKinds[] = {
+    {"discrete", [](verve_agent_desc& d) { d.num_discrete_sensors = 2; d.discrete_sensor_values[0] = 4; d.discrete_sensor_values[1] = 3; }},
+    {"continuous", [](verve_agent_desc& d) { d.num_continuous_sensors = 2; }},
+    {"circular", [](verve_agent_desc& d) { d.num_continuous_sensors = 2; d.continuous_sensor_circular[0] = 1; }},
+    {"mixed", [](verve_agent_desc& d) { d.num_discrete_sensors = 1; d.discrete_sensor_values[0] = 2; d.num_continuous_sensors = 1; }},
+    {"full", [](verve_agent_desc& d) { d.num_continuous_sensors = 1; d.rbf_allocation = VERVE_RBF_FULL; }},
+    {"planning", [](verve_agent_desc& d) { d.num_discrete_sensors = 1; d.discrete_sensor_values[0] = 5; d.planning = 1; }},
+    {"planning-ordinal", [](verve_agent_desc& d) { d.num_discrete_sensors = 1; d.discrete_sensor_values[0] = 5; d.planning = 1; d.discrete_prediction = VERVE_DISCRETE_PREDICTION_ORDINAL; }},
+    {"planning-continuous", [](verve_agent_desc& d) { d.num_continuous_sensors = 1; d.planning = 1; }},
+    {"novelty", [](verve_agent_desc& d) { d.num_discrete_sensors = 1; d.discrete_sensor_values[0] = 4; d.planning = 1; d.curiosity = VERVE_CURIOSITY_NOVELTY; }},
+    {"progress", [](verve_agent_desc& d) { d.num_continuous_sensors = 1; d.planning = 1; d.curiosity = VERVE_CURIOSITY_PROGRESS; }},
+    {"no-sensors", [](verve_agent_desc& d) { d.num_actions = 4; }},
+};
+
+bool writeSave(const verve_agent* agent, const std::string& path) {
+    size_t size = 0;
+    if (verve_agent_save_memory(agent, nullptr, &size) != VERVE_OK) return false;
+    std::vector<char> bytes(size);
+    if (verve_agent_save_memory(agent, bytes.data(), &size) != VERVE_OK) return false;
+    FILE* f = std::fopen(path.c_str(), "wb");
+    if (f == nullptr) return false;
+    const bool ok = std::fwrite(bytes.data(), 1, size, f) == size;
+    return std::fclose(f) == 0 && ok;
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+    if (argc != 2) {
+        std::fprintf(stderr, "usage: %s <corpus dir>\n", argv[0]);
+        return 2;
+    }
+    for (const Kind& kind : kKinds) {
+        verve_agent_desc d;
+        verve_agent_desc_default(&d);
+        d.resolution = 4;
+        d.num_actions = 3;
+        kind.shape(d);
+        verve_agent* agent = nullptr;
+        if (verve_agent_create(&d, &agent) != VERVE_OK) {
+            std::fprintf(stderr, "%s: %s\n", kind.name, verve_last_error());
+            return 1;
+        }
+        uint32_t action = 0;
+        for (int step = 0; step < 12; ++step) {
+            const int32_t discrete[2] = {step % 2, step % 3};
+            const float continuous[2] = {-0.9f + 0.15f * static_cast<float>(step), 0.3f};
+            const float reward = step % 4 == 3 ? 1.0f : -0.1f;
+            if (verve_agent_update(agent, reward, discrete, d.num_discrete_sensors, continuous, d.num_continuous_sensors,
+                                   0.1f, &action) != VERVE_OK) {
+                std::fprintf(stderr, "%s: %s\n", kind.name, verve_last_error());
+                return 1;
+            }
+        }
+        if (std::string(kind.name) == "discrete") verve_agent_set_learning(agent, 0);
+        const std::string path = std::string(argv[1]) + "/" + kind.name + ".xml";
+        if (!writeSave(agent, path)) {
+            std::fprintf(stderr, "%s: cannot write %s\n", kind.name, path.c_str());
+            return 1;
+        }
+        verve_agent_destroy(agent);
+    }
+    return 0;
+}

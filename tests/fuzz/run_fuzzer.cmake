@@ -1,0 +1,35 @@
+# Runs one libFuzzer target for $VERVE_FUZZ_SECONDS (default 30) over a scratch copy of its seeds.
+# Fails on any crash, sanitizer report, leak, out-of-memory (> 2 GB) or input slower than 1 s,
+# and leaves the reproducer in WORK/. Prints libFuzzer's closing statistics (executions, coverage).
+set(seconds $ENV{VERVE_FUZZ_SECONDS})
+if(NOT seconds)
+  set(seconds 30)
+endif()
+file(REMOVE_RECURSE ${WORK})
+file(MAKE_DIRECTORY ${WORK}/corpus)
+if(EXISTS ${SEEDS})
+  file(GLOB seeds ${SEEDS}/*)
+  if(seeds)
+    file(COPY ${seeds} DESTINATION ${WORK}/corpus)
+  endif()
+endif()
+execute_process(
+  COMMAND ${FUZZER} -max_total_time=${seconds} -timeout=1 -rss_limit_mb=2048 -print_final_stats=1
+    -artifact_prefix=${WORK}/ ${WORK}/corpus
+  WORKING_DIRECTORY ${WORK}
+  RESULT_VARIABLE result
+  OUTPUT_VARIABLE out ERROR_VARIABLE out)
+string(REGEX MATCHALL "stat::[a-z_]+: +[0-9]+" stats "${out}")
+string(REGEX MATCH "#[0-9]+[^\n]*DONE[^\n]*" done "${out}")
+message("${done}")
+foreach(s ${stats})
+  message("  ${s}")
+endforeach()
+if(NOT result EQUAL 0)
+  string(LENGTH "${out}" length)
+  if(length GREATER 12000)
+    math(EXPR from "${length} - 12000")
+    string(SUBSTRING "${out}" ${from} 12000 out)
+  endif()
+  message(FATAL_ERROR "${FUZZER} failed (exit ${result}); reproducer in ${WORK}/\n${out}")
+endif()
