@@ -1,4 +1,6 @@
 using System;
+#nullable enable
+using System.Runtime.InteropServices;
 using Verve.Native;
 
 namespace Verve
@@ -66,11 +68,11 @@ namespace Verve
                     _agents[taken] = h.DangerousGetHandle();
                 }
                 fixed (IntPtr* a = _agents)
-                fixed (float* r = rewards)
-                fixed (int* d = discrete)
-                fixed (float* c = continuous)
-                fixed (int* o = actions)
-                fixed (ResultCode* v = results)
+                fixed (float* r = &MemoryMarshal.GetReference(rewards))
+                fixed (int* d = &MemoryMarshal.GetReference(discrete))
+                fixed (float* c = &MemoryMarshal.GetReference(continuous))
+                fixed (int* o = &MemoryMarshal.GetReference(actions))
+                fixed (ResultCode* v = &MemoryMarshal.GetReference(results))
                 {
                     VerveException.ThrowIfFailed(NativeMethods.verve_batch_update(handle, a, (uint)agents.Length, r,
                         d, null, (uint)discrete.Length, c, null, (uint)continuous.Length, dt, (uint*)o, results.Length == 0 ? null : v));

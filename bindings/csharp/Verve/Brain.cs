@@ -1,4 +1,5 @@
 using System;
+using System.Runtime.InteropServices;
 using Verve.Native;
 
 namespace Verve
@@ -84,7 +85,7 @@ namespace Verve
         {
             VerveLibrary.EnsureCompatible();
             IntPtr brain;
-            fixed (byte* d = data)
+            fixed (byte* d = &MemoryMarshal.GetReference(data))
                 VerveException.ThrowIfFailed(NativeMethods.verve_brain_load_memory(d, (UIntPtr)data.Length, out brain));
             return new Brain(brain);
         }
