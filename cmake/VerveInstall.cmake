@@ -1,8 +1,9 @@
 # Install rules and the package exports:
 #   find_package(verve)                    -> verve::verve      (libverve.so, the C ABI)
-#   find_package(verve COMPONENTS cpp)     -> verve::verve_cpp  (static C++ libraries; needs Eigen3, pugixml)
+#   find_package(verve COMPONENTS cpp)     -> verve::verve_cpp  (static C++ libraries; needs Eigen3)
 #   pkg-config verve                       -> the C ABI
-# The C target is exported apart from the C++ ones, so a C host does not need Eigen or pugixml.
+# The C target is exported apart from the C++ ones, so a C host does not need Eigen. pugixml is
+# inside libverve and, for C++ users, installed as the static libverve_pugixml.a next to verve_io.
 include(CMakePackageConfigHelpers)
 
 set(VERVE_CMAKE_DIR ${CMAKE_INSTALL_LIBDIR}/cmake/verve)
@@ -14,7 +15,7 @@ target_compile_features(verve_cpp INTERFACE cxx_std_17)
 install(TARGETS verve EXPORT verveTargets
   LIBRARY DESTINATION ${CMAKE_INSTALL_LIBDIR} ARCHIVE DESTINATION ${CMAKE_INSTALL_LIBDIR}
   RUNTIME DESTINATION ${CMAKE_INSTALL_BINDIR})
-install(TARGETS verve_core verve_io verve_cpp EXPORT verveCppTargets
+install(TARGETS verve_core verve_io verve_pugixml verve_cpp EXPORT verveCppTargets
   ARCHIVE DESTINATION ${CMAKE_INSTALL_LIBDIR})
 install(FILES ${PROJECT_SOURCE_DIR}/include/verve_c.h DESTINATION ${CMAKE_INSTALL_INCLUDEDIR})
 install(DIRECTORY ${PROJECT_SOURCE_DIR}/include/verve DESTINATION ${CMAKE_INSTALL_INCLUDEDIR}

@@ -85,7 +85,24 @@ doc docs/experiments.md 'cmake -S . -B build -DCMAKE_BUILD_TYPE=Release && cmake
 doc docs/experiments.md 'build/samples/tasks/verve-experiments list'
 ctest_doc docs/experiments.md 'ctest --test-dir build -L learning'
 
+# C#: the package commands run (dotnet test and the sample are what test.sh's C# step runs next).
+doc docs/csharp.md 'cmake -S . -B build -DCMAKE_BUILD_TYPE=Release'
+doc docs/csharp.md 'cmake --build build -j2 --target verve'
+in_doc docs/csharp.md 'bindings/csharp/test.sh build/src/capi'
+in_doc docs/csharp.md 'dotnet test bindings/csharp/Verve.Tests -p:VerveNativeDir=build/src/capi'
+in_doc docs/csharp.md 'dotnet run --project bindings/csharp/Verve.Sample -p:VerveNativeDir=build/src/capi -- 150 1'
+doc docs/csharp.md 'dotnet pack bindings/csharp/Verve -c Release -p:VerveNativeDir=build/src/capi -o out/nuget'
+doc docs/csharp.md 'bindings/csharp/unity/make_package.sh out/unity build/src/capi'
+doc docs/csharp.md 'dotnet build bindings/csharp/Verve -c Release -p:VerveStaticLink=true -o out/verve-static'
+
 ctest_doc docs/tuning.md "ctest --test-dir build -R '^(love\.|NpcArenaLearning|HotPlateLearning|CartPoleLearning|PendulumLearning|PatrolRecipe)'"
+
+# What the shipped library needs; the Windows cross build's commands run in test.sh right after this.
+doc docs/platforms.md 'readelf -d build/src/capi/libverve.so | grep NEEDED'
+doc docs/platforms.md "objdump -T build/src/capi/libverve.so | grep -o 'GLIBC_[0-9.]*' | sort -uV | tail -1"
+in_doc docs/platforms.md 'cmake --preset mingw-release'
+in_doc docs/platforms.md 'cmake --build --preset mingw-release'
+in_doc docs/platforms.md 'ctest --preset mingw-release'
 
 [ "$had_out" = yes ] || rm -rf out
 if [ "$failures" -gt 0 ]; then

@@ -1,6 +1,7 @@
 #!/usr/bin/env bash
 # Installs the Debian packages Verve builds and tests with (only the missing ones: fast when all
-# are present). Needs root or sudo on a fresh machine.
+# are present), and fetches pugixml's source into third_party/ (it is compiled into libverve).
+# Needs root or sudo on a fresh machine.
 #   ./scripts/setup.sh         what the build and the demo need
 #   ./scripts/setup.sh --test  also what every test suite needs (cross toolchain, Wine, engines, Mono,
 #                              clang for fuzzing)
@@ -8,7 +9,7 @@ set -euo pipefail
 
 packages=(
   build-essential cmake pkg-config
-  libeigen3-dev libbullet-dev libpugixml-dev libcli11-dev
+  libeigen3-dev libbullet-dev libcli11-dev
   googletest libgtest-dev libbenchmark-dev
   liblua5.4-dev lua5.4 luajit libluajit-5.1-dev
   gnuplot-nox
@@ -16,6 +17,7 @@ packages=(
 # Only for ./scripts/test.sh: each group names what it is for.
 test_packages=(
   dpkg-dev                                     # apt-get source: third-party sources (scripts/fetch_source.sh)
+  g++-mingw-w64-x86-64-posix wine64            # verve.dll cross-built for Windows x64, tested under Wine
   love                                         # LÖVE 11: the samples/love game's test (tests/love)
   mono-devel                                   # C# binding under Mono 6.8, Unity's runtime: mcs, mono, netstandard facade
   unzip jq                                     # C#: unpacking the NuGet package, checking the Unity package's JSON
@@ -37,3 +39,7 @@ if [ ${#missing[@]} -gt 0 ]; then
   "${sudo_cmd[@]}" apt-get -o DPkg::Lock::Timeout=600 update -qq
   "${sudo_cmd[@]}" apt-get -o DPkg::Lock::Timeout=600 install -y -qq --no-install-recommends "${missing[@]}" >/dev/null
 fi
+
+# pugixml is built from source into libverve (cmake/VervePugixml.cmake), so the shipped library
+# does not need libpugixml.so on a player's machine. Skipped when already there.
+"$(dirname "$0")/fetch_source.sh" pugixml "$(dirname "$0")/../third_party"

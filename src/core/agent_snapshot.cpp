@@ -114,14 +114,7 @@ std::unique_ptr<Agent::Impl> restoreAgent(const AgentSnapshot& snap) {
 
 void snapshotBrain(const BrainState& brain, AgentSnapshot& snap) {
     snap.descriptor = brain.desc;
-    const std::uint32_t count = brain.rep.featureCount();
-    const std::uint32_t nc = brain.rep.numContinuous();
-    snap.featureKeys.reserve(count);
-    snap.centres.reserve(std::size_t(count) * nc);
-    for (std::uint32_t i = 0; i < count; ++i) {
-        snap.featureKeys.push_back(brain.rep.featureKey(i));
-        snap.centres.insert(snap.centres.end(), brain.rep.centre(i), brain.rep.centre(i) + nc);
-    }
+    brain.rep.features(snap.featureKeys, snap.centres);
     snap.stride = brain.weights.stride();
     snap.weights = brain.weights.data();
     snap.traceStride = 1 + brain.desc.numActions;

@@ -1,7 +1,5 @@
 #include "core/state_representation.hpp"
 
-#include <Eigen/Core>
-
 #include <algorithm>
 #include <cmath>
 
@@ -12,8 +10,6 @@ namespace {
 
 constexpr float kCutoffWidths = 4.0f;            // activations beyond 4 sigma count as zero
 constexpr std::uint64_t kMaxFullFeatures = 20000000;  // refuse absurd full lattices
-
-using Lanes = Eigen::Array<float, 8, 1>;
 
 std::uint64_t mix(std::uint64_t h, std::uint64_t v) {
     h ^= v + 0x9e3779b97f4a7c15ULL + (h << 6) + (h >> 2);
@@ -32,8 +28,9 @@ StateRepresentation::StateRepresentation(const AgentDescriptor& desc)
       cellsPerDim_(std::max<std::int32_t>(1, static_cast<std::int32_t>(desc.resolution / 4))),
       cellSize_(2.0f / static_cast<float>(cellsPerDim_)),
       keyCount_(1),
-      activationSum_(1.0f) {
-    for (const auto& s : desc.continuousSensors) circular_.push_back(s.circular);
+      activationSum_(1.0f),
+      kernels_(&kernels()) {
+    for (const auto& s : desc.continuousSensors) circular_.push_back(s.circular ? 1 : 0);
     for (auto c : discreteCounts_) keyCount_ *= c;
     activationSum_ = std::pow(2.5f, static_cast<float>(numContinuous_));
     coords_.resize(numContinuous_);
@@ -67,17 +64,39 @@ std::uint64_t StateRepresentation::cellHash(const std::int32_t* coords) const {
 }
 
 std::uint32_t StateRepresentation::addFeature(std::uint64_t key, const float* centre) {
-    const auto index = static_cast<std::uint32_t>(keys_.size());
-    keys_.push_back(key);
-    centres_.insert(centres_.end(), centre, centre + numContinuous_);
+    const std::uint32_t index = featureCount_++;
     cellCoords(centre, coords_.data());
     Cell& cell = arrays_[key].cells[cellHash(coords_.data())];
-    const std::size_t lane = cell.features.size() % kLanes;
-    if (lane == 0) cell.centres.resize(cell.centres.size() + std::size_t(numContinuous_) * kLanes, 0.0f);
-    float* block = cell.centres.data() + cell.centres.size() - std::size_t(numContinuous_) * kLanes;
-    for (std::uint32_t d = 0; d < numContinuous_; ++d) block[d * kLanes + lane] = centre[d];
+    const std::size_t lane = cell.features.size() % kScanLanes;
+    if (lane == 0) cell.centres.resize(cell.centres.size() + std::size_t(numContinuous_) * kScanLanes, 0.0f);
+    float* block = cell.centres.data() + cell.centres.size() - std::size_t(numContinuous_) * kScanLanes;
+    for (std::uint32_t d = 0; d < numContinuous_; ++d) block[d * kScanLanes + lane] = centre[d];
+    if (cell.bounds.empty()) cell.bounds.assign(std::size_t(numContinuous_) * 2, 0.0f);
+    for (std::uint32_t d = 0; d < numContinuous_; ++d) {
+        const bool first = cell.features.empty();
+        cell.bounds[2 * d] = first ? centre[d] : std::min(cell.bounds[2 * d], centre[d]);
+        cell.bounds[2 * d + 1] = first ? centre[d] : std::max(cell.bounds[2 * d + 1], centre[d]);
+    }
     cell.features.push_back(index);
     return index;
+}
+
+void StateRepresentation::features(std::vector<std::uint64_t>& keys, std::vector<float>& centres) const {
+    keys.assign(featureCount_, 0);
+    centres.assign(std::size_t(featureCount_) * numContinuous_, 0.0f);
+    for (const auto& [key, array] : arrays_) {
+        for (const auto& entry : array.cells) {
+            const Cell& cell = entry.second;
+            for (std::size_t i = 0; i < cell.features.size(); ++i) {
+                const std::uint32_t f = cell.features[i];
+                keys[f] = key;
+                const float* block = cell.centres.data() + (i / kScanLanes) * numContinuous_ * kScanLanes;
+                for (std::uint32_t d = 0; d < numContinuous_; ++d) {
+                    centres[std::size_t(f) * numContinuous_ + d] = block[d * kScanLanes + i % kScanLanes];
+                }
+            }
+        }
+    }
 }
 
 void StateRepresentation::allocateFullLattice() {
@@ -104,6 +123,13 @@ void StateRepresentation::allocateFullLattice() {
             }
         }
     }
+    // The lattice is complete: no cell grows again, so none keeps spare capacity.
+    for (auto& [key, array] : arrays_) {
+        for (auto& entry : array.cells) {
+            entry.second.features.shrink_to_fit();
+            entry.second.centres.shrink_to_fit();
+        }
+    }
 }
 
 std::uint32_t StateRepresentation::activate(const std::int32_t* discrete, const float* continuous,
@@ -113,36 +139,27 @@ std::uint32_t StateRepresentation::activate(const std::int32_t* discrete, const 
     return 1;
 }
 
-bool StateRepresentation::scanCell(const Cell& c, const float* continuous, std::vector<ActiveFeature>& out) const {
-    const float cutoff2 = kCutoffWidths * kCutoffWidths * sigma_ * sigma_;
-    const float sigma2 = sigma_ * sigma_;
-    const float inv2Sigma2 = 1.0f / (2.0f * sigma2);
-    bool nearOne = false;
-    std::size_t n = out.size();
-    out.resize(n + c.features.size());  // capacity is reused once warmed up
-    ActiveFeature* slots = out.data();
-    const float* block = c.centres.data();
-    for (std::size_t first = 0; first < c.features.size(); first += kLanes) {
-        // kLanes RBFs at once: Eigen maps the fixed-size arrays onto SIMD registers.
-        Lanes d2 = Lanes::Zero();
-        for (std::uint32_t d = 0; d < numContinuous_; ++d, block += kLanes) {
-            Lanes diff = continuous[d] - Eigen::Map<const Lanes>(block);
-            if (circular_[d]) {  // the shorter way round: -1 and 1 meet
-                diff = (diff > 1.0f).select(diff - 2.0f, (diff < -1.0f).select(diff + 2.0f, diff));
-            }
-            d2 += diff.square();
-        }
-        const Lanes activation = (d2 * -inv2Sigma2).exp();
-        // Branch-free: every candidate is written and kept only within the cutoff
-        // (about half are, so a branch would mispredict constantly).
-        const std::size_t lanes = std::min<std::size_t>(kLanes, c.features.size() - first);
-        for (std::size_t l = 0; l < lanes; ++l) {
-            slots[n] = ActiveFeature{c.features[first + l], activation[l]};
-            n += d2[l] < cutoff2;
-            nearOne |= d2[l] < sigma2;
-        }
+float StateRepresentation::boxDistance2(const Cell& c, const float* point) const {
+    float sum = 0.0f;
+    for (std::uint32_t d = 0; d < numContinuous_; ++d) {
+        const float lo = c.bounds[2 * d], hi = c.bounds[2 * d + 1];
+        auto gap = [lo, hi](float x) { return std::max(0.0f, std::max(lo - x, x - hi)); };
+        float g = gap(point[d]);
+        if (circular_[d]) g = std::min(g, std::min(gap(point[d] - 2.0f), gap(point[d] + 2.0f)));
+        sum += g * g;
     }
-    out.resize(n);
+    return sum;
+}
+
+bool StateRepresentation::scanCell(const Cell& c, const ScanParams& params, std::vector<ActiveFeature>& out) const {
+    // The margin keeps an RBF whose distance rounds differently in the scan (a box distance is
+    // never more than any of its centres' distances).
+    if (boxDistance2(c, params.point) > params.cutoff2 * 1.0001f) return false;
+    const std::size_t n = out.size();
+    const std::size_t count = c.features.size();
+    out.resize(n + (count + kScanLanes - 1) / kScanLanes * kScanLanes);  // capacity is reused once warmed up
+    bool nearOne = false;
+    out.resize(n + kernels_->scan(params, c.centres.data(), c.features.data(), count, out.data() + n, nearOne));
     return nearOne;
 }
 
@@ -171,11 +188,18 @@ bool StateRepresentation::find(const std::int32_t* discrete, const float* contin
         neighbours *= n;
     }
 
+    ScanParams params;
+    params.point = continuous;
+    params.circular = circular_.data();
+    params.dims = numContinuous_;
+    params.cutoff2 = kCutoffWidths * kCutoffWidths * sigma_ * sigma_;
+    params.width2 = sigma_ * sigma_;
+    params.negInv2Sigma2 = -1.0f / (2.0f * sigma_ * sigma_);
     bool nearOne = false;
     if (cells.size() <= neighbours) {
         // A coarse grid (low resolution, many sensors): the array has no more cells than the
         // neighbourhood, so reading them all costs no more and needs no hashing.
-        for (const auto& entry : cells) nearOne |= scanCell(entry.second, continuous, out);
+        for (const auto& entry : cells) nearOne |= scanCell(entry.second, params, out);
         return nearOne;
     }
     visited_.clear();
@@ -186,7 +210,7 @@ bool StateRepresentation::find(const std::int32_t* discrete, const float* contin
         // Two neighbour cells whose hashes collide share one list: visit it once.
         if (cell != cells.end() && std::find(visited_.begin(), visited_.end(), hash) == visited_.end()) {
             visited_.push_back(hash);
-            nearOne |= scanCell(cell->second, continuous, out);
+            nearOne |= scanCell(cell->second, params, out);
         }
         std::uint32_t d = 0;
         for (; d < numContinuous_; ++d) {  // odometer over the neighbour cells

@@ -10,19 +10,11 @@
 #include <unordered_map>
 #include <vector>
 
+#include "core/active_feature.hpp"
+#include "core/kernels.hpp"
 #include "verve/agent_descriptor.hpp"
 
 namespace verve::core {
-
-struct ActiveFeature {
-    // Deliberately leaves its fields uninitialised: the activation scan resizes its output to
-    // every candidate, then overwrites them, and value-initialising would cost a pass of its own.
-    ActiveFeature() noexcept {}  // NOLINT(cppcoreguidelines-pro-type-member-init)
-    ActiveFeature(std::uint32_t i, float a) noexcept : index(i), activation(a) {}
-
-    std::uint32_t index;
-    float activation;  // in (0, 1]
-};
 
 class StateRepresentation {
 public:
@@ -36,11 +28,12 @@ public:
     // The same without allocating; returns whether some RBF lies within one width.
     bool find(const std::int32_t* discrete, const float* continuous, std::vector<ActiveFeature>& out) const;
 
-    std::uint32_t featureCount() const { return static_cast<std::uint32_t>(keys_.size()); }
+    std::uint32_t featureCount() const { return featureCount_; }
     std::uint32_t numContinuous() const { return numContinuous_; }
     std::uint64_t keyCount() const { return keyCount_; }
-    std::uint64_t featureKey(std::uint32_t feature) const { return keys_[feature]; }
-    const float* centre(std::uint32_t feature) const { return centres_.data() + std::size_t(feature) * numContinuous_; }
+    // Every feature's discrete key and centre (numContinuous values), by feature index. Not for
+    // the hot path: the grid cells hold the only copy of a centre, so this walks all of them.
+    void features(std::vector<std::uint64_t>& keys, std::vector<float>& centres) const;
 
     // Divides the learning rates: the expected activation sum of a lattice of RBFs,
     // sqrt(2 pi) ~ 2.5 per continuous dimension, and 1 when all sensors are discrete.
@@ -50,27 +43,31 @@ public:
     std::uint32_t addFeature(std::uint64_t key, const float* centre);
 
 private:
-    // A cell keeps copies of its RBFs' centres next to their indices, in blocks of kLanes RBFs
+    // A cell keeps copies of its RBFs' centres next to their indices, in blocks of kScanLanes RBFs
     // stored dimension by dimension ([block][dimension][lane]): the distance loop then runs
-    // across kLanes RBFs at once in SIMD registers.
-    static constexpr std::uint32_t kLanes = 8;
+    // across kScanLanes RBFs at once in SIMD registers.
+    // A cell also keeps the bounding box of its centres: a cell whose box lies beyond the cutoff
+    // is skipped unread (in 4-D most of the 3^4 neighbour cells' RBFs are out of reach).
     struct Cell {
         std::vector<std::uint32_t> features;
-        std::vector<float> centres;  // blocks of numContinuous_ * kLanes floats
+        std::vector<float> centres;  // blocks of numContinuous_ * kScanLanes floats
+        std::vector<float> bounds;   // per dimension: lowest, highest centre
     };
     struct Array {
         std::unordered_map<std::uint64_t, Cell> cells;
     };
 
     // Appends the RBFs of one cell within the cutoff; returns whether one lies within a width.
-    bool scanCell(const Cell& c, const float* continuous, std::vector<ActiveFeature>& out) const;
+    bool scanCell(const Cell& c, const ScanParams& params, std::vector<ActiveFeature>& out) const;
+    // Squared distance from a point to a cell's bounding box (the shorter way on circular sensors).
+    float boxDistance2(const Cell& c, const float* point) const;
     std::uint64_t discreteKey(const std::int32_t* discrete) const;
     void cellCoords(const float* point, std::int32_t* coords) const;
     std::uint64_t cellHash(const std::int32_t* coords) const;
     void allocateFullLattice();
 
     std::vector<std::uint32_t> discreteCounts_;
-    std::vector<bool> circular_;
+    std::vector<std::uint8_t> circular_;
     std::uint32_t numContinuous_;
     std::uint32_t resolution_;
     float sigma_;
@@ -78,10 +75,10 @@ private:
     float cellSize_;
     std::uint64_t keyCount_;
     float activationSum_;
+    const Kernels* kernels_;  // chosen for this CPU (kernels.hpp)
 
     std::unordered_map<std::uint64_t, Array> arrays_;
-    std::vector<std::uint64_t> keys_;  // per feature: its discrete combination
-    std::vector<float> centres_;       // per feature: numContinuous_ values
+    std::uint32_t featureCount_ = 0;
 
     // Scratch for neighbour enumeration (no allocation once warmed up). Mutable: lookups are
     // logically const, and one agent is used by one thread at a time.

@@ -6,24 +6,21 @@
 namespace verve::core {
 
 TdLearner::TdLearner(std::uint32_t numActions, float traceThreshold)
-    : numActions_(numActions), stride_(1 + numActions), threshold_(traceThreshold) {}
+    : numActions_(numActions), stride_(1 + numActions), threshold_(traceThreshold), kernels_(&kernels()) {}
 
 float TdLearner::value(const WeightTable& w, const std::vector<ActiveFeature>& phi) const {
     float v = 0.0f;
-    for (const auto& f : phi) v += w.row(f.index)[WeightLayout::kValue] * f.activation;
+    kernels_->rowSums(w.data().data(), w.stride(), phi.data(), phi.size(), 1, &v);
     return v;
 }
 
 std::uint32_t TdLearner::chooseAction(const WeightTable& w, const std::vector<ActiveFeature>& phi, Rng& rng,
                                       std::vector<float>& activations, float& value) const {
-    activations.assign(numActions_, 0.0f);
-    float v = 0.0f;
-    for (const auto& f : phi) {
-        const float* row = w.row(f.index);
-        v += row[WeightLayout::kValue] * f.activation;
-        for (std::uint32_t a = 0; a < numActions_; ++a) activations[a] += row[WeightLayout::kPolicy + a] * f.activation;
-    }
-    value = v;
+    // One pass over a row's first columns, [value, policy[A]]; then the value leaves the front.
+    activations.resize(stride_);
+    kernels_->rowSums(w.data().data(), w.stride(), phi.data(), phi.size(), stride_, activations.data());
+    value = activations[WeightLayout::kValue];
+    activations.erase(activations.begin());
     float total = 0.0f;
     for (auto& y : activations) {
         y = 1.0f / (1.0f + std::exp(-y));
@@ -47,30 +44,22 @@ void TdLearner::trainAndDecay(WeightTable& w, float delta, TdRates rates, float 
     // A trace row [value, policy[A]] lines up with the first 1 + A weights of its feature's row.
     step_.assign(stride_, rates.policy * delta);
     step_[0] = rates.value * delta;
-    std::uint32_t kept = 0;
-    for (std::uint32_t i = 0; i < liveCount_; ++i) {
-        const std::uint32_t feature = live_[i];
-        float* row = w.row(feature);
-        float* e = trace(feature);
-        for (std::uint32_t k = 0; k < stride_; ++k) {
-            row[k] += step_[k] * e[k];
-            e[k] *= decay;
-        }
-        // Branch-free compaction, in order, so results never depend on drop patterns.
-        const bool keep = e[0] >= threshold_;
-        const float scale = keep ? 1.0f : 0.0f;
-        for (std::uint32_t k = 0; k < stride_; ++k) e[k] *= scale;
-        live_[kept] = feature;
-        kept += keep;
-    }
-    liveCount_ = kept;
+    TraceStep s;
+    s.step = step_.data();
+    s.traceStride = stride_;
+    s.weightStride = w.stride();
+    s.decay = decay;
+    s.threshold = threshold_;
+    liveCount_ = kernels_->trainDecay(s, w.data().data(), traces_.data(), live_.data(), liveCount_);
 }
 
 void TdLearner::grow(std::uint32_t featureCount) {
-    // One spare live slot: mark() writes a candidate entry before it knows whether it is new.
-    if (live_.size() > featureCount) return;
-    traces_.resize(std::size_t(featureCount) * stride_, 0.0f);
-    live_.resize(std::size_t(featureCount) + 1);
+    if (traces_.size() < std::size_t(featureCount) * stride_) traces_.resize(std::size_t(featureCount) * stride_, 0.0f);
+}
+
+void TdLearner::reserveLive(std::size_t more) {
+    // One spare slot: mark() writes a candidate entry before it knows whether it is new.
+    if (live_.size() < liveCount_ + more + 1) live_.resize(liveCount_ + more + 1);
 }
 
 void TdLearner::mark(const std::vector<ActiveFeature>& phi, std::uint32_t action, std::uint32_t featureCount) {
@@ -84,6 +73,7 @@ void TdLearner::mark(const std::vector<ActiveFeature>& phi, std::uint32_t action
         strong_[n] = f;
         n += f.activation >= threshold_;
     }
+    reserveLive(n);
     for (std::size_t i = 0; i < n; ++i) {
         const ActiveFeature& f = strong_[i];
         float* e = trace(f.index);
@@ -117,6 +107,7 @@ void TdLearner::restore(const std::vector<std::uint32_t>& features, const std::v
                         std::uint32_t featureCount) {
     clear();
     grow(featureCount);
+    reserveLive(features.size());
     for (std::size_t i = 0; i < features.size(); ++i) {
         std::copy_n(traces.data() + i * stride_, stride_, trace(features[i]));
         live_[liveCount_++] = features[i];

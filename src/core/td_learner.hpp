@@ -12,6 +12,7 @@
 #include <limits>
 #include <vector>
 
+#include "core/kernels.hpp"
 #include "core/rng.hpp"
 #include "core/state_representation.hpp"
 #include "core/weight_table.hpp"
@@ -59,16 +60,18 @@ public:
 
 private:
     void grow(std::uint32_t featureCount);
+    void reserveLive(std::size_t more);  // room for `more` live entries beyond liveCount_
     float* trace(std::uint32_t feature) { return traces_.data() + std::size_t(feature) * stride_; }
 
     std::uint32_t numActions_;
     std::uint32_t stride_;  // 1 + numActions: value trace, then one per action
     float threshold_;
     std::vector<float> traces_;         // per feature, stride_ values; zero unless live
-    std::vector<std::uint32_t> live_;   // live features in its first liveCount_ entries
+    std::vector<std::uint32_t> live_;   // live features in its first liveCount_ entries (sized by need)
     std::uint32_t liveCount_ = 0;
     std::vector<float> step_;           // eta * delta per trace component (scratch)
     std::vector<ActiveFeature> strong_; // features active enough to mark a trace (scratch)
+    const Kernels* kernels_;            // chosen for this CPU (kernels.hpp)
 };
 
 }  // namespace verve::core

@@ -1,127 +1,106 @@
 #include "io/atomic_file.hpp"
 
-#if defined(_WIN32)
-#error "atomic_file.cpp: only POSIX is implemented (Windows needs MoveFileEx + FlushFileBuffers)"
-#endif
-
-#include <cerrno>
-#include <cstring>
-#include <fcntl.h>
-#include <sys/stat.h>
-#include <unistd.h>
-
 #include <atomic>
-#include <chrono>
+#include <cstdio>
 
+#include "io/platform_file.hpp"
 #include "verve/error.hpp"
 
 namespace verve::io {
 namespace {
 
-[[noreturn]] void fail(const std::string& what, const std::string& path, int error) {
-    throw Error(ErrorCode::Io, what + " '" + path + "': " + std::strerror(error));
+// A file name may have at most 255 bytes (ext4, NTFS in UTF-16 units, most others).
+constexpr std::size_t kMaxNameBytes = 255;
+// The temporary name's tail after the target's head: ".tmp-" + 8 hex digits + "-" + pid (up to
+// 20 digits) + "-" + counter (up to 20 digits).
+constexpr std::size_t kMaxTempTail = 5 + 8 + 1 + 20 + 1 + 20;
+
+std::uint32_t fnv1a(const std::string& text) {
+    std::uint32_t hash = 2166136261u;
+    for (const unsigned char c : text) hash = (hash ^ c) * 16777619u;
+    return hash;
 }
 
-std::string directoryOf(const std::string& path) {
-    const auto slash = path.find_last_of('/');
-    if (slash == std::string::npos) return ".";
-    if (slash == 0) return "/";
-    return path.substr(0, slash);
+// "<head of name>.tmp-<hash of name>-": what every temporary file of this target starts with.
+// The head is cut (at a UTF-8 character boundary) so that a temporary name never exceeds the
+// file system's limit even when the target's own name is at it; the hash of the whole name keeps
+// apart targets whose names share that head.
+std::string temporaryPrefix(const std::string& name) {
+    std::size_t keep = name.size() < kMaxNameBytes - kMaxTempTail ? name.size() : kMaxNameBytes - kMaxTempTail;
+    while (keep > 0 && keep < name.size() && (static_cast<unsigned char>(name[keep]) & 0xC0) == 0x80) --keep;
+    char hash[9];
+    std::snprintf(hash, sizeof hash, "%08x", static_cast<unsigned>(fnv1a(name)));
+    return name.substr(0, keep) + ".tmp-" + hash + "-";
 }
 
-// Closes the descriptor and, unless released, removes the temporary file on every error path.
-class TempFile {
-public:
-    TempFile(std::string path, int fd) : path_(std::move(path)), fd_(fd) {}
-    ~TempFile() {
-        if (fd_ >= 0) ::close(fd_);
-        if (!committed_) ::unlink(path_.c_str());
-    }
-    TempFile(const TempFile&) = delete;
-    TempFile& operator=(const TempFile&) = delete;
-
-    int fd() const { return fd_; }
-    const std::string& path() const { return path_; }
-    int close() {
-        const int rc = ::close(fd_);
-        fd_ = -1;
-        return rc;
-    }
-    void commit() { committed_ = true; }
-
-private:
-    std::string path_;
-    int fd_;
-    bool committed_ = false;
-};
-
-// A name no other saver uses: pid, a process-wide counter and the clock. O_EXCL guards the rest.
-TempFile createTemp(const std::string& path) {
-    static std::atomic<unsigned long> counter{0};
-    for (int attempt = 0; attempt < 100; ++attempt) {
-        const auto tick = std::chrono::steady_clock::now().time_since_epoch().count();
-        const std::string name = path + ".tmp-" + std::to_string(::getpid()) + "-" +
-                                 std::to_string(counter.fetch_add(1)) + "-" + std::to_string(tick % 1000000);
-        const int fd = ::open(name.c_str(), O_WRONLY | O_CREAT | O_EXCL | O_CLOEXEC, 0666);
-        if (fd >= 0) return TempFile(name, fd);
-        if (errno != EEXIST) fail("cannot create a temporary file next to", path, errno);
-    }
-    fail("cannot create a temporary file next to", path, EEXIST);
-}
-
-void writeAll(const TempFile& file, const std::string& data) {
-    const char* p = data.data();
-    std::size_t left = data.size();
-    while (left > 0) {
-        const ssize_t n = ::write(file.fd(), p, left);
-        if (n < 0) {
-            if (errno == EINTR) continue;
-            fail("cannot write", file.path(), errno);
+// Removes the temporary files that saves of this target left when their process was killed. A
+// file whose owner (the pid in its name) still runs is left alone: it may be a save in progress.
+void removeStaleTemporaries(const std::string& directory, const std::string& prefix) {
+    const std::uint64_t self = platform::currentProcessId();
+    for (const std::string& name : platform::listDirectory(directory)) {
+        if (name.compare(0, prefix.size(), prefix) != 0) continue;
+        std::uint64_t pid = 0;
+        std::size_t i = prefix.size();
+        for (; i < name.size() && name[i] >= '0' && name[i] <= '9' && pid < (std::uint64_t{1} << 40); ++i) {
+            pid = pid * 10 + static_cast<std::uint64_t>(name[i] - '0');
         }
-        p += n;
-        left -= static_cast<std::size_t>(n);
+        if (i == prefix.size() || i == name.size() || name[i] != '-') continue;  // not one of ours
+        if (pid != self && !platform::processIsRunning(pid)) platform::removeFile(platform::joinPath(directory, name));
     }
-}
-
-// Makes the rename itself durable. Some file systems refuse fsync on a directory: not an error.
-void syncDirectory(const std::string& dir) {
-    const int fd = ::open(dir.c_str(), O_RDONLY | O_DIRECTORY | O_CLOEXEC);
-    if (fd < 0) return;
-    ::fsync(fd);
-    ::close(fd);
 }
 
 }  // namespace
 
 void writeFileAtomically(const std::string& path, const std::string& data) {
     if (path.empty()) throw Error(ErrorCode::InvalidArgument, "the path is empty");
-    TempFile temp = createTemp(path);
-    writeAll(temp, data);
-    if (::fsync(temp.fd()) != 0) fail("cannot flush", temp.path(), errno);
-    if (temp.close() != 0) fail("cannot close", temp.path(), errno);
-    if (::rename(temp.path().c_str(), path.c_str()) != 0) fail("cannot replace", path, errno);
-    temp.commit();
-    syncDirectory(directoryOf(path));
+    const std::string target = platform::followLinks(path);
+    const platform::PathParts parts = platform::splitPath(target);
+    const std::string prefix = temporaryPrefix(parts.name);
+    removeStaleTemporaries(parts.directory, prefix);
+
+    static std::atomic<std::uint64_t> counter{0};  // with the pid: no other saver picks the same name
+    const std::string ours = prefix + std::to_string(platform::currentProcessId()) + "-";
+    std::string temp;
+    for (int attempt = 0;; ++attempt) {
+        temp = platform::joinPath(parts.directory, ours + std::to_string(counter.fetch_add(1)));
+        if (platform::writeNewFile(temp, data)) break;
+        if (attempt == 100) throw Error(ErrorCode::Io, "cannot create a temporary file next to '" + target + "'");
+    }
+    try {
+        platform::replaceFile(temp, target);
+    } catch (...) {
+        platform::removeFile(temp);
+        throw;
+    }
 }
 
 std::string readWholeFile(const std::string& path) {
     if (path.empty()) throw Error(ErrorCode::InvalidArgument, "the path is empty");
-    struct Descriptor {
-        int fd;
-        ~Descriptor() { if (fd >= 0) ::close(fd); }
-    } in{::open(path.c_str(), O_RDONLY | O_CLOEXEC)};
-    if (in.fd < 0) fail("cannot open", path, errno);
-    std::string data;
-    char buffer[1 << 16];
-    for (;;) {
-        const ssize_t n = ::read(in.fd, buffer, sizeof buffer);
-        if (n < 0) {
-            if (errno == EINTR) continue;
-            fail("cannot read", path, errno);
-        }
-        if (n == 0) return data;
-        data.append(buffer, static_cast<std::size_t>(n));
-    }
+    return platform::readRegularFile(path, kMaxSaveFileBytes);
 }
 
+namespace platform {
+
+PathParts splitPath(const std::string& path) {
+    const auto slash = path.find_last_of(pathSeparators());
+    if (slash == std::string::npos) return {"", path};
+    return {path.substr(0, slash == 0 ? 1 : slash), path.substr(slash + 1)};
+}
+
+std::string joinPath(const std::string& directory, const std::string& name) {
+    if (directory.empty()) return name;
+    const bool separated = std::string(pathSeparators()).find(directory.back()) != std::string::npos;
+    return separated ? directory + name : directory + pathSeparators()[0] + name;
+}
+
+void refuseNonRegular(const std::string& path) {
+    throw Error(ErrorCode::Io, "cannot load '" + path + "': not a regular file (a directory, device or pipe)");
+}
+
+void refuseTooLarge(const std::string& path, std::uint64_t maxBytes) {
+    throw Error(ErrorCode::Io, "cannot load '" + path + "': larger than the " + std::to_string(maxBytes) +
+                                   "-byte limit for a save file");
+}
+
+}  // namespace platform
 }  // namespace verve::io

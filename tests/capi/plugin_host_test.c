@@ -1,14 +1,14 @@
-/* A host in plain C99 that loads libverve the way an engine loads a plugin (dlopen/dlsym, no
- * link-time dependency), creates agents, trains one on the 1D hot plate until it clearly learns,
- * saves it, and checks that the loaded copy acts exactly like the original.
+/* A host in plain C99 that loads libverve the way an engine loads a plugin (dlopen/dlsym, or
+ * LoadLibrary/GetProcAddress on Windows; no link-time dependency), creates agents, trains one on
+ * the 1D hot plate until it clearly learns, saves it, and checks that the loaded copy acts exactly
+ * like the original.
  *
- * usage: verve_plugin_host_test <path to libverve.so> <scratch file for the save> */
-#define _POSIX_C_SOURCE 200809L
-#include <dlfcn.h>
+ * usage: verve_plugin_host_test <libverve.so or verve.dll> <scratch file for the save> */
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
 
+#include "plugin_loader.h"
 #include "verve_c.h"
 
 /* ---- the plugin's entry points ---- */
@@ -41,14 +41,14 @@ static int failures = 0;
     } while (0)
 
 static void* symbol(void* lib, const char* name) {
-    void* p = dlsym(lib, name);
+    void* p = plugin_symbol(lib, name);
     if (p == NULL) {
-        fprintf(stderr, "missing symbol %s: %s\n", name, dlerror());
+        fprintf(stderr, "missing symbol %s: %s\n", name, plugin_error());
         exit(1);
     }
     return p;
 }
-/* ISO C has no cast from void* to a function pointer; copying the bits is the POSIX idiom. */
+/* ISO C has no cast from void* to a function pointer; copying the bits is the portable idiom. */
 #define BIND(field, name)                      \
     do {                                       \
         void* p_ = symbol(lib, name);          \
@@ -103,9 +103,9 @@ int main(int argc, char** argv) {
         fprintf(stderr, "usage: %s <libverve.so> <save file>\n", argv[0]);
         return 2;
     }
-    lib = dlopen(argv[1], RTLD_NOW | RTLD_LOCAL);
+    lib = plugin_open(argv[1]);
     if (lib == NULL) {
-        fprintf(stderr, "dlopen: %s\n", dlerror());
+        fprintf(stderr, "cannot load %s: %s\n", argv[1], plugin_error());
         return 1;
     }
     BIND(last_error, "verve_last_error");
@@ -116,7 +116,7 @@ int main(int argc, char** argv) {
     BIND(end_episode, "verve_agent_end_episode");
     BIND(save, "verve_agent_save");
     BIND(load, "verve_agent_load");
-    CHECK(dlsym(lib, "_ZN5verve5AgentC1ERKNS_15AgentDescriptorE") == NULL); /* no C++ symbols leak */
+    CHECK(plugin_symbol(lib, "_ZN5verve5AgentC1ERKNS_15AgentDescriptorE") == NULL); /* no C++ symbols leak */
 
     api.desc_default(&desc);
     desc.num_discrete_sensors = 1;
@@ -157,7 +157,7 @@ int main(int argc, char** argv) {
     api.destroy(loaded);
     for (i = 0; i < 3; ++i) api.destroy(agents[i]);
     remove(argv[2]);
-    dlclose(lib);
+    plugin_close(lib);
     if (failures > 0) {
         fprintf(stderr, "%d check(s) failed\n", failures);
         return 1;

@@ -1,5 +1,6 @@
-// Saves to a path are atomic: killing a saving process at any moment leaves a loadable save,
-// and a failed save leaves neither a changed target nor a temporary file.
+// Saves to a path are atomic: killing a saving process at any moment leaves a loadable save, the
+// temporary files of killed saves do not accumulate, and a failed save leaves neither a changed
+// target nor a temporary file.
 #include <gtest/gtest.h>
 
 #include <signal.h>
@@ -12,7 +13,9 @@
 #include <random>
 #include <thread>
 
+#include "io/atomic_file.hpp"
 #include "io_test_support.hpp"
+#include "save_dir_fixture.hpp"
 #include "verve/io.hpp"
 
 namespace fs = std::filesystem;
@@ -20,40 +23,14 @@ namespace fs = std::filesystem;
 namespace verve {
 namespace {
 
-class AtomicSave : public ::testing::Test {
-protected:
-    void SetUp() override {
-        dir_ = fs::temp_directory_path() / ("verve_atomic_" + std::to_string(::getpid()));
-        fs::remove_all(dir_);
-        fs::create_directories(dir_);
-    }
-    void TearDown() override { fs::remove_all(dir_); }
+using AtomicSave = iotest::SaveDir;
+using iotest::fileBytes;
 
-    std::vector<std::string> leftovers() const {
-        std::vector<std::string> names;
-        for (const auto& e : fs::directory_iterator(dir_)) {
-            if (e.path().filename().string().find(".tmp-") != std::string::npos) names.push_back(e.path().string());
-        }
-        return names;
-    }
-
-    static ErrorCode saveError(const Agent& agent, const fs::path& path) {
-        try {
-            saveAgent(agent, path.string());
-        } catch (const Error& e) {
-            return e.code();
-        }
-        return ErrorCode::Internal;  // "no error" is wrong too
-    }
-
-    fs::path dir_;
-};
-
-// A big agent: the full lattice of 2 sensors at resolution 90 (8100 RBFs), about 400 kB of XML.
+// A big agent: the full lattice of 3 sensors at resolution 40 (64,000 RBFs), about 8 MB of XML.
 Agent bigAgent(std::uint64_t feedSeed) {
     AgentDescriptor d;
-    d.addContinuousSensor().addContinuousSensor();
-    d.resolution = 90;
+    d.addContinuousSensor().addContinuousSensor().addContinuousSensor();
+    d.resolution = 40;
     d.numActions = 4;
     d.allocation = RbfAllocation::Full;
     return iotest::trainedAgent(d, 300, feedSeed);
@@ -62,39 +39,47 @@ Agent bigAgent(std::uint64_t feedSeed) {
 TEST_F(AtomicSave, KilledMidSaveTheTargetAlwaysLoads) {
     const Agent a = bigAgent(1);
     const Agent b = bigAgent(2);
-    ASSERT_FALSE(iotest::sameBits(a.snapshot().weights, b.snapshot().weights));
+    const std::string xmlA = saveAgentToString(a);
+    const std::string xmlB = saveAgentToString(b);
+    ASSERT_NE(xmlA, xmlB);
     const fs::path target = dir_ / "agent.xml";
     saveAgent(a, target.string());
 
+    const auto start = std::chrono::steady_clock::now();
     std::mt19937 rng(42);
     int killedMidWrite = 0;
-    for (int round = 0; round < 25; ++round) {
+    constexpr int kKills = 100;
+    for (int round = 0; round < kKills; ++round) {
         const pid_t child = ::fork();
         ASSERT_GE(child, 0);
         if (child == 0) {  // saves forever, alternating two different agents
-            try {
-                for (unsigned i = 0;; ++i) saveAgent(i % 2 ? a : b, target.string());
+            try {  // the file part of saveAgent: serialising would take most of the time otherwise
+                for (unsigned i = 0;; ++i) io::writeFileAtomically(target.string(), i % 2 ? xmlB : xmlA);
             } catch (...) {
             }
             ::_exit(1);
         }
-        std::this_thread::sleep_for(std::chrono::microseconds(2000 + rng() % 40000));
+        std::this_thread::sleep_for(std::chrono::microseconds(1000 + rng() % 60000));
         ::kill(child, SIGKILL);
         int status = 0;
         ::waitpid(child, &status, 0);
         ASSERT_TRUE(WIFSIGNALED(status)) << "the saving child stopped on its own (status " << status << ")";
 
-        const Agent loaded = loadAgent(target.string());  // throws if the save is torn
-        const auto w = loaded.snapshot().weights;
-        EXPECT_TRUE(iotest::sameBits(w, a.snapshot().weights) || iotest::sameBits(w, b.snapshot().weights));
-        // A kill leaves the child's temporary file behind (nothing can clean up after SIGKILL).
+        const std::string bytes = fileBytes(target);  // exactly one of the two saves, never a mix
+        ASSERT_TRUE(bytes == xmlA || bytes == xmlB) << "round " << round << ": a torn save of " << bytes.size() << " bytes";
+        // Each save removes what killed saves left, so at most the last kill's file is there.
         const auto temps = leftovers();
+        ASSERT_LE(temps.size(), 1u) << "temporary files accumulate: " << temps.size() << " after round " << round;
         killedMidWrite += static_cast<int>(temps.size());
-        for (const auto& t : temps) fs::remove(t);
     }
+    saveAgent(a, target.string());
+    EXPECT_TRUE(leftovers().empty()) << "a save left a killed save's temporary file in place";
+    iotest::expectSameSnapshot(loadAgent(target.string()).snapshot(), a.snapshot());
     // The kills must actually land inside saves, or the test proves nothing.
-    EXPECT_GT(killedMidWrite, 2);
-    std::printf("[          ] %d of 25 kills landed while a temporary file existed\n", killedMidWrite);
+    EXPECT_GT(killedMidWrite, kKills / 10);
+    const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+    std::printf("[          ] %d of %d kills landed while a temporary file existed (%zu-byte saves, %.1f s)\n",
+                killedMidWrite, kKills, xmlA.size(), seconds);
 }
 
 TEST_F(AtomicSave, AFailedRenameLeavesNoTemporaryFile) {
@@ -120,18 +105,13 @@ TEST_F(AtomicSave, AFailedWriteKeepsThePreviousSave) {
     const Agent big = bigAgent(3);
 
     // In a child whose file-size limit is far below the big save, write() fails (EFBIG).
-    const pid_t child = ::fork();
-    ASSERT_GE(child, 0);
-    if (child == 0) {
+    const int status = inChild([&] {
         ::signal(SIGXFSZ, SIG_IGN);
         const rlimit limit{64 * 1024, 64 * 1024};
         ::setrlimit(RLIMIT_FSIZE, &limit);
-        ::_exit(saveError(big, target) == ErrorCode::Io ? 0 : 1);
-    }
-    int status = 0;
-    ::waitpid(child, &status, 0);
-    ASSERT_TRUE(WIFEXITED(status));
-    EXPECT_EQ(WEXITSTATUS(status), 0) << "the oversized save did not fail with an Io error";
+        return saveError(big, target) == ErrorCode::Io ? 0 : 1;
+    });
+    EXPECT_EQ(status, 0) << "the oversized save did not fail with an Io error";
     EXPECT_TRUE(leftovers().empty());
     EXPECT_EQ(saveAgentToString(loadAgent(target.string())), before);
 }

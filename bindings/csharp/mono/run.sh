@@ -15,7 +15,7 @@ if [[ $# -ne 2 || ! -f "$1" || ! -f "$2/libverve.so" ]]; then
     echo "usage: $0 [--static] <Verve.dll> <folder containing libverve.so>" >&2
     exit 2
 fi
-for tool in mcs mono; do
+for tool in mcs mono ikdasm; do
     command -v "$tool" >/dev/null || { echo "error: $tool not found (Debian package mono-devel; scripts/setup.sh --test)" >&2; exit 2; }
 done
 facades=/usr/lib/mono/4.5/Facades
@@ -25,6 +25,15 @@ work=$(mktemp -d)
 trap 'rm -rf "$work"' EXIT
 
 cp "$1" "$work/"
+# Static half, for paths the host may not reach: a call to a netstandard member returning `ref readonly`
+# (modreq InAttribute: a ReadOnlySpan's GetPinnableReference, indexer or enumerator) cannot bind on
+# Mono 6.8, whose corlib returns plain refs there.
+ikdasm "$work/Verve.dll" >"$work/Verve.il"
+if grep -E '(call|newobj|ldftn).*modreq\(\[netstandard\]System\.Runtime\.InteropServices\.InAttribute\).* \[netstandard\]' "$work/Verve.il" >&2; then
+    echo "error: Verve.dll calls the netstandard members above, missing on Mono: pin spans with" \
+         "MemoryMarshal.GetReference and do not index ReadOnlySpans (see Agent.Update)" >&2
+    exit 1
+fi
 mcs -nologo -langversion:7.2 -warnaserror -r:"$work/Verve.dll" -r:"$facades/netstandard.dll" \
     -out:"$work/MonoHost.exe" "$here/MonoHost.cs"
 cd "$work"

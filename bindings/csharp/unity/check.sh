@@ -7,8 +7,9 @@
 # - every file and folder has a .meta, every .meta its file, all GUIDs distinct;
 # - each native library's import settings enable exactly its OS's editor and x86_64 player;
 # - Runtime/ compiles as Unity compiles it (Roslyn, C# 9, against the netstandard2.1 reference, only the
-#   asmdef's settings), and that assembly passes the Mono host (mono/run.sh) with the packaged libverve.so.
-# Takes about 15 s. Exits non-zero on the first failed check.
+#   asmdef's settings), and that assembly passes the Mono host (mono/run.sh) with the packaged libverve.so;
+#   so does the VERVE_STATIC_LINK variant, with libverve preloaded (mono/run.sh --static).
+# Takes about 20 s. Exits non-zero on the first failed check.
 set -euo pipefail
 
 if [[ $# -lt 2 || $# -gt 3 || ! -f "$1/package.json" ]]; then
@@ -86,10 +87,19 @@ sdk=$(dotnet --list-sdks | tail -1 | sed 's/^\([^ ]*\) \[\(.*\)\]$/\2\/\1/')
 netstandard=$(dotnet nuget locals global-packages --list | sed 's/^global-packages: //')netstandard.library.ref/2.1.0/ref/netstandard2.1/netstandard.dll
 [[ -f $netstandard ]] || fail "no netstandard2.1 reference assembly at $netstandard (restore bindings/csharp/Verve first)"
 mapfile -t sources < <(find "$pkg/Runtime" -name '*.cs' | sort)
-dotnet "$sdk/Roslyn/bincore/csc.dll" -nologo -noconfig -nostdlib -target:library -langversion:9 -unsafe \
-    -warnaserror -r:"$netstandard" -out:"$work/Verve.dll" "${sources[@]}" ||
-    fail "Runtime/ does not compile on its own (C# 9, netstandard2.1)"
-mono_log=$("$here/../mono/run.sh" "$work/Verve.dll" "$pkg/Plugins/Linux/x86_64" 2>&1) ||
-    { echo "$mono_log" >&2; fail "the assembly compiled from Runtime/ fails under Mono"; }
-tail -2 <<<"$mono_log"
+# Twice: as is, and with the VERVE_STATIC_LINK scripting define that iOS/WebGL builds set, run with
+# libverve preloaded into the process (DllImport("__Internal")).
+for variant in dynamic static; do
+    define=()
+    [[ $variant == dynamic ]] || define=(-define:VERVE_STATIC_LINK)
+    mkdir -p "$work/$variant"
+    dotnet "$sdk/Roslyn/bincore/csc.dll" -nologo -noconfig -nostdlib -target:library -langversion:9 -unsafe \
+        -warnaserror "${define[@]}" -r:"$netstandard" -out:"$work/$variant/Verve.dll" "${sources[@]}" ||
+        fail "Runtime/ does not compile on its own (C# 9, netstandard2.1, $variant)"
+    mono_args=("$work/$variant/Verve.dll" "$pkg/Plugins/Linux/x86_64")
+    [[ $variant == dynamic ]] || mono_args=(--static "${mono_args[@]}")
+    mono_log=$("$here/../mono/run.sh" "${mono_args[@]}" 2>&1) ||
+        { echo "$mono_log" >&2; fail "the assembly compiled from Runtime/ ($variant) fails under Mono"; }
+    echo "$variant: $(tail -1 <<<"$mono_log")"
+done
 echo "unity check: ok"

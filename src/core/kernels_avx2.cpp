@@ -1,0 +1,137 @@
+// Kernels for x86-64 CPUs with AVX2 and FMA (compiled with -mavx2 -mfma; kernels.cpp calls them
+// only on such a CPU). Intrinsics and raw pointers only: a template from a shared header may be
+// instantiated here only with a type of this file's own (kernel_loops.hpp), or the linker could hand
+// this file's AVX2 copy of it to the rest of the library.
+#include <immintrin.h>
+
+#include "core/kernel_loops.hpp"
+#include "core/kernels.hpp"
+
+namespace verve::core {
+namespace {
+
+// exp(x) for x <= 0 (Cephes expf): x = n ln2 + r, |r| <= ln2 / 2, e^r by a degree-6 polynomial,
+// 2^n put in the exponent bits. Relative error ~1e-7, that of std::exp in float.
+__m256 expNonPositive(__m256 x) {
+    x = _mm256_max_ps(x, _mm256_set1_ps(-87.0f));  // e^-87 is still a normal float
+    const __m256 n = _mm256_round_ps(_mm256_mul_ps(x, _mm256_set1_ps(1.44269504088896341f)),
+                                     _MM_FROUND_TO_NEAREST_INT | _MM_FROUND_NO_EXC);
+    x = _mm256_fnmadd_ps(n, _mm256_set1_ps(0.693359375f), x);  // ln 2 in two parts, exact first
+    x = _mm256_fnmadd_ps(n, _mm256_set1_ps(-2.12194440e-4f), x);
+    __m256 y = _mm256_set1_ps(1.9875691500e-4f);
+    y = _mm256_fmadd_ps(y, x, _mm256_set1_ps(1.3981999507e-3f));
+    y = _mm256_fmadd_ps(y, x, _mm256_set1_ps(8.3334519073e-3f));
+    y = _mm256_fmadd_ps(y, x, _mm256_set1_ps(4.1665795894e-2f));
+    y = _mm256_fmadd_ps(y, x, _mm256_set1_ps(1.6666665459e-1f));
+    y = _mm256_fmadd_ps(y, x, _mm256_set1_ps(5.0000001201e-1f));
+    y = _mm256_fmadd_ps(y, _mm256_mul_ps(x, x), x);
+    y = _mm256_add_ps(y, _mm256_set1_ps(1.0f));
+    const __m256i pow2n = _mm256_slli_epi32(_mm256_add_epi32(_mm256_cvtps_epi32(n), _mm256_set1_epi32(127)), 23);
+    return _mm256_mul_ps(y, _mm256_castsi256_ps(pow2n));
+}
+
+// For each 8-bit mask, the lane numbers of its set bits first: a left-packing permutation.
+struct PackTable {
+    std::uint32_t lanes[256][8];
+    std::uint8_t count[256];
+};
+constexpr PackTable makePackTable() {
+    PackTable t{};
+    for (std::uint32_t mask = 0; mask < 256; ++mask) {
+        std::uint32_t n = 0;
+        for (std::uint32_t l = 0; l < 8; ++l) {
+            if (mask & (1u << l)) t.lanes[mask][n++] = l;
+        }
+        t.count[mask] = static_cast<std::uint8_t>(n);
+    }
+    return t;
+}
+constexpr PackTable kPack = makePackTable();
+
+std::size_t scan(const ScanParams& p, const float* centres, const std::uint32_t* features, std::size_t count,
+                 ActiveFeature* out, bool& nearOne) {
+    static_assert(kScanLanes == 8, "one block is one AVX register");
+    const __m256 cutoff2 = _mm256_set1_ps(p.cutoff2), width2 = _mm256_set1_ps(p.width2);
+    const __m256 scale = _mm256_set1_ps(p.negInv2Sigma2);
+    const __m256 one = _mm256_set1_ps(1.0f), minusOne = _mm256_set1_ps(-1.0f), two = _mm256_set1_ps(2.0f);
+    std::size_t n = 0;
+    int near = 0;
+    const float* block = centres;
+    for (std::size_t first = 0; first < count; first += kScanLanes) {
+        __m256 d2 = _mm256_setzero_ps();
+        for (std::uint32_t d = 0; d < p.dims; ++d, block += kScanLanes) {
+            __m256 diff = _mm256_sub_ps(_mm256_set1_ps(p.point[d]), _mm256_loadu_ps(block));
+            if (p.circular[d]) {  // the shorter way round: -1 and 1 meet
+                const __m256 down = _mm256_and_ps(_mm256_cmp_ps(diff, one, _CMP_GT_OQ), two);
+                const __m256 up = _mm256_and_ps(_mm256_cmp_ps(diff, minusOne, _CMP_LT_OQ), two);
+                diff = _mm256_add_ps(_mm256_sub_ps(diff, down), up);
+            }
+            d2 = _mm256_fmadd_ps(diff, diff, d2);
+        }
+        const __m256 activation = expNonPositive(_mm256_mul_ps(d2, scale));
+        const std::size_t remaining = count - first;
+        const int valid = remaining >= kScanLanes ? 0xff : (1 << remaining) - 1;
+        const __m256i laneNumbers = _mm256_setr_epi32(0, 1, 2, 3, 4, 5, 6, 7);
+        const __m256i index =
+            remaining >= kScanLanes
+                ? _mm256_loadu_si256(reinterpret_cast<const __m256i*>(features + first))
+                : _mm256_maskload_epi32(reinterpret_cast<const int*>(features + first),
+                                        _mm256_cmpgt_epi32(_mm256_set1_epi32(static_cast<int>(remaining)), laneNumbers));
+        const int keep = _mm256_movemask_ps(_mm256_cmp_ps(d2, cutoff2, _CMP_LT_OQ)) & valid;
+        near |= _mm256_movemask_ps(_mm256_cmp_ps(d2, width2, _CMP_LT_OQ)) & valid;
+        // Left-pack the kept lanes, then interleave (index, activation) pairs: 8 ActiveFeatures.
+        const __m256i perm = _mm256_loadu_si256(reinterpret_cast<const __m256i*>(kPack.lanes[keep]));
+        const __m256 packedIndex = _mm256_castsi256_ps(_mm256_permutevar8x32_epi32(index, perm));
+        const __m256 packedActivation = _mm256_permutevar8x32_ps(activation, perm);
+        const __m256 lo = _mm256_unpacklo_ps(packedIndex, packedActivation);  // pairs 0 1 | 4 5
+        const __m256 hi = _mm256_unpackhi_ps(packedIndex, packedActivation);  // pairs 2 3 | 6 7
+        float* dst = reinterpret_cast<float*>(out + n);
+        _mm256_storeu_ps(dst, _mm256_permute2f128_ps(lo, hi, 0x20));
+        _mm256_storeu_ps(dst + 8, _mm256_permute2f128_ps(lo, hi, 0x31));
+        n += kPack.count[keep];
+    }
+    nearOne |= near != 0;
+    return n;
+}
+
+void rowSums(const float* weights, std::uint32_t stride, const ActiveFeature* phi, std::size_t n,
+             std::uint32_t columns, float* sums) {
+    const __m256i laneNumbers = _mm256_setr_epi32(0, 1, 2, 3, 4, 5, 6, 7);
+    for (std::uint32_t c = 0; c < columns; c += 8) {
+        // Up to 8 columns per pass; a masked load never reads past a row's last column.
+        const __m256i mask = _mm256_cmpgt_epi32(_mm256_set1_epi32(static_cast<int>(columns - c)), laneNumbers);
+        const float* base = weights + c;
+        // Four accumulators: an FMA's latency is four adds long.
+        __m256 acc[4] = {_mm256_setzero_ps(), _mm256_setzero_ps(), _mm256_setzero_ps(), _mm256_setzero_ps()};
+        std::size_t i = 0;
+        for (; i + 4 <= n; i += 4) {
+            for (std::size_t j = 0; j < 4; ++j) {
+                const __m256 w = _mm256_maskload_ps(base + std::size_t(phi[i + j].index) * stride, mask);
+                acc[j] = _mm256_fmadd_ps(w, _mm256_set1_ps(phi[i + j].activation), acc[j]);
+            }
+        }
+        for (; i < n; ++i) {
+            const __m256 w = _mm256_maskload_ps(base + std::size_t(phi[i].index) * stride, mask);
+            acc[0] = _mm256_fmadd_ps(w, _mm256_set1_ps(phi[i].activation), acc[0]);
+        }
+        _mm256_maskstore_ps(sums + c, mask, _mm256_add_ps(_mm256_add_ps(acc[0], acc[1]), _mm256_add_ps(acc[2], acc[3])));
+    }
+}
+
+// w += step * e, then e *= scale, for 4 trace components.
+struct Quad4 {
+    static void train(float* w, float* e, const float* step, float scale) {
+        const __m128 ek = _mm_loadu_ps(e);
+        _mm_storeu_ps(w, _mm_fmadd_ps(_mm_loadu_ps(step), ek, _mm_loadu_ps(w)));
+        _mm_storeu_ps(e, _mm_mul_ps(ek, _mm_set1_ps(scale)));
+    }
+};
+
+}  // namespace
+
+const Kernels& avx2KernelTable() {
+    static const Kernels k{"avx2+fma", scan, rowSums, trainDecay<Quad4>};
+    return k;
+}
+
+}  // namespace verve::core

@@ -1,0 +1,179 @@
+// Every kernel set this CPU runs (portable, and AVX2 + FMA where supported) against a plain
+// double-precision reference: the same features in the same order, values within float rounding.
+#include "core/kernels.hpp"
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <cstdint>
+#include <vector>
+
+#include "core/rng.hpp"
+
+using verve::core::ActiveFeature;
+using verve::core::Kernels;
+using verve::core::kScanLanes;
+using verve::core::Rng;
+using verve::core::ScanParams;
+using verve::core::TraceStep;
+
+namespace {
+
+std::vector<const Kernels*> kernelSets() {
+    std::vector<const Kernels*> sets{&verve::core::portableKernels()};
+    if (verve::core::avx2Kernels() != nullptr) sets.push_back(verve::core::avx2Kernels());
+    return sets;
+}
+
+float uniform(Rng& rng, float lo, float hi) { return lo + (hi - lo) * rng.uniform(); }
+
+struct ScanCase {
+    std::uint32_t dims;
+    std::size_t count;
+    std::vector<std::uint8_t> circular;
+    std::vector<float> point, centres;  // centres: [rbf][dim] (the reference's layout)
+    std::vector<std::uint32_t> features;
+};
+
+ScanCase randomCase(Rng& rng, std::uint32_t dims, std::size_t count) {
+    ScanCase c{dims, count, {}, {}, {}, {}};
+    for (std::uint32_t d = 0; d < dims; ++d) {
+        c.circular.push_back(d % 2 == 1 ? 1 : 0);
+        c.point.push_back(uniform(rng, -1.0f, 1.0f));
+    }
+    for (std::size_t i = 0; i < count * dims; ++i) c.centres.push_back(uniform(rng, -1.0f, 1.0f));
+    for (std::size_t i = 0; i < count; ++i) c.features.push_back(static_cast<std::uint32_t>(1000 + 7 * i));
+    return c;
+}
+
+// [block][dim][lane], the last block padded with zeros.
+std::vector<float> blocked(const ScanCase& c) {
+    const std::size_t blocks = (c.count + kScanLanes - 1) / kScanLanes;
+    std::vector<float> out(blocks * c.dims * kScanLanes, 0.0f);
+    for (std::size_t i = 0; i < c.count; ++i) {
+        for (std::uint32_t d = 0; d < c.dims; ++d) {
+            out[(i / kScanLanes) * c.dims * kScanLanes + d * kScanLanes + i % kScanLanes] = c.centres[i * c.dims + d];
+        }
+    }
+    return out;
+}
+
+}  // namespace
+
+TEST(Kernels, ScanFindsWhatADoublePrecisionScanFinds) {
+    Rng rng(7);
+    const float sigma = 0.25f;
+    for (const Kernels* k : kernelSets()) {
+        SCOPED_TRACE(k->name);
+        for (std::uint32_t dims : {1u, 2u, 4u, 5u}) {
+            for (std::size_t count : {1u, 7u, 8u, 9u, 16u, 61u}) {
+                const ScanCase c = randomCase(rng, dims, count);
+                ScanParams p;
+                p.point = c.point.data();
+                p.circular = c.circular.data();
+                p.dims = dims;
+                p.cutoff2 = 16.0f * sigma * sigma;
+                p.width2 = sigma * sigma;
+                p.negInv2Sigma2 = -1.0f / (2.0f * sigma * sigma);
+                const std::vector<float> centres = blocked(c);
+                std::vector<ActiveFeature> out((count + kScanLanes - 1) / kScanLanes * kScanLanes);
+                bool near = false;
+                const std::size_t n = k->scan(p, centres.data(), c.features.data(), count, out.data(), near);
+
+                std::vector<ActiveFeature> expected;
+                bool expectedNear = false;
+                for (std::size_t i = 0; i < count; ++i) {
+                    double d2 = 0.0;
+                    for (std::uint32_t d = 0; d < dims; ++d) {
+                        double diff = double(c.point[d]) - double(c.centres[i * dims + d]);
+                        if (c.circular[d] && diff > 1.0) diff -= 2.0;
+                        if (c.circular[d] && diff < -1.0) diff += 2.0;
+                        d2 += diff * diff;
+                    }
+                    if (d2 < p.cutoff2) expected.emplace_back(c.features[i], float(std::exp(-d2 / (2.0 * sigma * sigma))));
+                    expectedNear |= d2 < p.width2;
+                }
+                ASSERT_EQ(n, expected.size()) << dims << " dims, " << count << " RBFs";
+                EXPECT_EQ(near, expectedNear);
+                for (std::size_t i = 0; i < n; ++i) {
+                    EXPECT_EQ(out[i].index, expected[i].index);
+                    EXPECT_NEAR(out[i].activation, expected[i].activation, 1e-6f * expected[i].activation + 1e-9f);
+                }
+            }
+        }
+    }
+}
+
+TEST(Kernels, RowSumsAddEveryColumnOfEveryFeature) {
+    Rng rng(11);
+    for (const Kernels* k : kernelSets()) {
+        SCOPED_TRACE(k->name);
+        for (std::uint32_t stride : {1u, 2u, 4u, 5u, 8u, 11u, 19u}) {
+            for (std::size_t n : {0u, 1u, 3u, 4u, 9u, 130u}) {
+                std::vector<float> weights(64 * stride);
+                for (auto& w : weights) w = uniform(rng, -2.0f, 2.0f);
+                std::vector<ActiveFeature> phi;
+                for (std::size_t i = 0; i < n; ++i) phi.emplace_back(static_cast<std::uint32_t>(rng.below(64)), rng.uniform());
+                for (std::uint32_t columns = 1; columns <= stride; ++columns) {
+                    std::vector<float> sums(columns, -99.0f);
+                    k->rowSums(weights.data(), stride, phi.data(), n, columns, sums.data());
+                    for (std::uint32_t c = 0; c < columns; ++c) {
+                        double expected = 0.0;
+                        for (const auto& f : phi) expected += double(weights[f.index * stride + c]) * f.activation;
+                        EXPECT_NEAR(sums[c], expected, 1e-5 * (1.0 + double(n))) << "stride " << stride << " column " << c;
+                    }
+                }
+            }
+        }
+    }
+}
+
+TEST(Kernels, TrainDecayUpdatesLiveRowsAndDropsFadedTracesInOrder) {
+    Rng rng(13);
+    for (const Kernels* k : kernelSets()) {
+        SCOPED_TRACE(k->name);
+        for (std::uint32_t traceStride : {2u, 3u, 4u, 5u, 9u}) {
+            const std::uint32_t weightStride = traceStride + 3;  // model columns after the traces
+            const std::uint32_t features = 50;
+            std::vector<float> weights(features * weightStride), traces(features * traceStride, 0.0f), step(traceStride);
+            for (auto& w : weights) w = uniform(rng, -1.0f, 1.0f);
+            for (auto& s : step) s = uniform(rng, -0.5f, 0.5f);
+            std::vector<std::uint32_t> live;
+            for (std::uint32_t f = 0; f < features; f += 3) {
+                live.push_back(f);
+                for (std::uint32_t c = 0; c < traceStride; ++c) traces[f * traceStride + c] = uniform(rng, 0.0f, 0.05f);
+            }
+            const std::vector<float> w0 = weights, e0 = traces;
+            TraceStep s;
+            s.step = step.data();
+            s.traceStride = traceStride;
+            s.weightStride = weightStride;
+            s.decay = 0.5f;
+            s.threshold = 0.01f;
+            std::vector<std::uint32_t> liveOut = live;
+            const std::uint32_t kept = k->trainDecay(s, weights.data(), traces.data(), liveOut.data(),
+                                                     static_cast<std::uint32_t>(live.size()));
+
+            std::vector<std::uint32_t> expectedLive;
+            for (std::uint32_t f = 0; f < features; ++f) {
+                const bool isLive = f % 3 == 0;
+                const bool keeps = isLive && e0[f * traceStride] * 0.5f >= s.threshold;
+                if (keeps) expectedLive.push_back(f);
+                for (std::uint32_t c = 0; c < weightStride; ++c) {
+                    const float trained = c < traceStride && isLive ? step[c] * e0[f * traceStride + c] : 0.0f;
+                    EXPECT_NEAR(weights[f * weightStride + c], w0[f * weightStride + c] + trained, 1e-6f);
+                }
+                for (std::uint32_t c = 0; c < traceStride; ++c) {
+                    EXPECT_FLOAT_EQ(traces[f * traceStride + c], keeps ? e0[f * traceStride + c] * 0.5f : 0.0f);
+                }
+            }
+            ASSERT_EQ(kept, expectedLive.size());
+            for (std::uint32_t i = 0; i < kept; ++i) EXPECT_EQ(liveOut[i], expectedLive[i]);
+        }
+    }
+}
+
+TEST(Kernels, TheChosenSetIsTheFastestThisCpuRuns) {
+    const Kernels* avx2 = verve::core::avx2Kernels();
+    EXPECT_EQ(&verve::core::kernels(), avx2 != nullptr ? avx2 : &verve::core::portableKernels());
+}
