@@ -95,6 +95,18 @@ doc docs/csharp.md 'dotnet pack bindings/csharp/Verve -c Release -p:VerveNativeD
 doc docs/csharp.md 'bindings/csharp/unity/make_package.sh out/unity build/src/capi'
 doc docs/csharp.md 'dotnet build bindings/csharp/Verve -c Release -p:VerveStaticLink=true -o out/verve-static'
 
+in_doc docs/godot.md './scripts/setup.sh --test'
+ctest_doc docs/godot.md "ctest --test-dir build -R '^godot\.'"
+in_doc docs/godot.md 'cp -r build/godot/addons/verve  path/to/your/project/addons/'
+doc docs/godot.md 'ls -R build/godot/addons/verve' 'cd build/godot/addons/verve && ls verve.gdnlib verve_agent.gdns bin/x11/libverve_godot.so bin/x11/libverve.so.0'
+in_doc docs/godot.md 'godot3 --path build/godot/sample '   # the window; the headless run below
+doc docs/godot.md 'godot3-server --path build/godot/sample --fixed-fps 60 --verve-test' \
+  'godot3-server --path build/godot/sample --fixed-fps 60 --verve-test --verve-seeds=1'
+if command -v xvfb-run >/dev/null && command -v godot3 >/dev/null; then
+  doc docs/godot.md 'xvfb-run -a -s "-screen 0 1024x768x24" godot3 --path build/godot/sample --fixed-fps 60 --verve-screenshot="$PWD/docs/img/godot-arena.png"' \
+    'xvfb-run -a -s "-screen 0 1024x768x24" godot3 --path build/godot/sample --fixed-fps 60 --verve-screenshot="$XDG_RUNTIME_DIR/godot.png" && test -s "$XDG_RUNTIME_DIR/godot.png"'
+fi
+
 ctest_doc docs/tuning.md "ctest --test-dir build -R '^(love\.|NpcArenaLearning|HotPlateLearning|CartPoleLearning|PendulumLearning|PatrolRecipe)'"
 
 # What the shipped library needs; the Windows cross build's commands run in test.sh right after this.

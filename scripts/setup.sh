@@ -17,6 +17,7 @@ packages=(
 # Only for ./scripts/test.sh: each group names what it is for.
 test_packages=(
   dpkg-dev                                     # apt-get source: third-party sources (scripts/fetch_source.sh)
+  godot3-server                                # the Godot plugin's engine tests, headless (bindings/godot)
   g++-mingw-w64-x86-64-posix wine64            # verve.dll cross-built for Windows x64, tested under Wine
   love                                         # LÖVE 11: the samples/love game's test (tests/love)
   mono-devel                                   # C# binding under Mono 6.8, Unity's runtime: mcs, mono, netstandard facade
@@ -43,3 +44,9 @@ fi
 # pugixml is built from source into libverve (cmake/VervePugixml.cmake), so the shipped library
 # does not need libpugixml.so on a player's machine. Skipped when already there.
 "$(dirname "$0")/fetch_source.sh" pugixml "$(dirname "$0")/../third_party"
+
+if [ "${1:-}" = "--test" ]; then
+  # The Godot plugin builds against Godot 3.2's GDNative headers, shipped by Debian only as source.
+  "$(dirname "$0")/fetch_source.sh" godot3 "$(dirname "$0")/../third_party" \
+    modules/gdnative/include modules/gdnative/gdnative_api.json
+fi

@@ -1,25 +1,83 @@
-// The opaque handle behind verve_agent*: a verve::Agent and nothing else.
+// The opaque handle behind verve_agent*: a verve::Agent, and the save of the latest size query.
 #pragma once
+#include <atomic>
+#include <cstdint>
+#include <string>
 #include <utility>
 
 #include "capi/capi_guard.hpp"
 #include "verve/agent.hpp"
 
+namespace verve::capi {
+
+// Counts changes to any agent while some handle holds a cached save, so that a cache is served
+// only when no agent at all changed since it was made: agents that share state (one brain, many
+// bodies) cannot make another handle's cache stale. Without caches, changes cost one load.
+struct SaveCacheClock {
+    static std::atomic<std::uint32_t>& caches() {
+        static std::atomic<std::uint32_t> n{0};
+        return n;
+    }
+    static std::atomic<std::uint64_t>& changes() {
+        static std::atomic<std::uint64_t> n{0};
+        return n;
+    }
+};
+
+}  // namespace verve::capi
+
 struct verve_agent {
-    explicit verve_agent(verve::Agent&& a) : agent(std::move(a)) {}
-    verve::Agent agent;
+    explicit verve_agent(verve::Agent&& a) : agent_(std::move(a)) {}
+    ~verve_agent() { dropSave(); }
+    verve_agent(const verve_agent&) = delete;
+    verve_agent& operator=(const verve_agent&) = delete;
+
+    const verve::Agent& agent() const { return agent_; }
+    // Every change goes through here (agent_ is private): it drops every cached save.
+    verve::Agent& mutableAgent() {
+        if (verve::capi::SaveCacheClock::caches().load(std::memory_order_relaxed) != 0) {
+            verve::capi::SaveCacheClock::changes().fetch_add(1, std::memory_order_relaxed);
+        }
+        return agent_;
+    }
+
+    // verve_agent_save_memory's two calls: the size query keeps the bytes it made, and the call
+    // with a buffer copies them if no agent changed in between, instead of serialising again.
+    void keepSave(std::string bytes) const {
+        if (!hasSave_) verve::capi::SaveCacheClock::caches().fetch_add(1, std::memory_order_relaxed);
+        hasSave_ = true;
+        save_ = std::move(bytes);
+        saveAt_ = verve::capi::SaveCacheClock::changes().load(std::memory_order_relaxed);
+    }
+    const std::string* keptSave() const {
+        return hasSave_ && saveAt_ == verve::capi::SaveCacheClock::changes().load(std::memory_order_relaxed)
+                   ? &save_
+                   : nullptr;
+    }
+    void dropSave() const {
+        if (hasSave_) verve::capi::SaveCacheClock::caches().fetch_sub(1, std::memory_order_relaxed);
+        hasSave_ = false;
+        std::string().swap(save_);
+    }
+
+private:
+    verve::Agent agent_;
+    // Mutable: a save is a const call (one agent is used by one thread at a time).
+    mutable bool hasSave_ = false;
+    mutable std::string save_;
+    mutable std::uint64_t saveAt_ = 0;
 };
 
 namespace verve::capi {
 
 inline Agent& agentOf(verve_agent* handle) {
     requireArg(handle, "agent");
-    return handle->agent;
+    return handle->mutableAgent();
 }
 
 inline const Agent& agentOf(const verve_agent* handle) {
     requireArg(handle, "agent");
-    return handle->agent;
+    return handle->agent();
 }
 
 // Hands a new agent to the host: *out is written only once everything has succeeded.

@@ -82,7 +82,8 @@ VERVE_API verve_result VERVE_CALL verve_batch_update(verve_batch* batch, verve_a
         requireArg(out_actions, "out_actions");
         batch->agents.resize(n);
         batch->results.assign(n, 0);
-        for (uint32_t i = 0; i < n; ++i) batch->agents[i] = agents[i] != nullptr ? &agents[i]->agent : nullptr;
+        // Through mutableAgent: an update drops the saves that verve_agent_save_memory keeps.
+        for (uint32_t i = 0; i < n; ++i) batch->agents[i] = agents[i] != nullptr ? &agents[i]->mutableAgent() : nullptr;
         verve::BatchStep step;
         step.agents = batch->agents.data();
         step.count = n;

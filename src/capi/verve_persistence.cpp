@@ -32,7 +32,14 @@ VERVE_API verve_result VERVE_CALL verve_agent_save_memory(const verve_agent* age
     return guarded(__func__, [&] {
         const verve::Agent& a = agentOf(agent);
         requireArg(size, "size");
-        verve::capi::copyOut(verve::saveAgentToString(a), buffer, *size);
+        // Serialised once for both calls: the size query keeps its bytes for the call with a buffer.
+        const std::string* kept = agent->keptSave();
+        if (kept == nullptr) {
+            agent->keepSave(verve::saveAgentToString(a));
+            kept = agent->keptSave();
+        }
+        verve::capi::copyOut(*kept, buffer, *size);
+        if (buffer != nullptr) agent->dropSave();  // delivered: free the copy
     });
 }
 

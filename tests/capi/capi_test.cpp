@@ -4,6 +4,7 @@
 
 #include <cmath>
 #include <cstring>
+#include <functional>
 #include <limits>
 #include <string>
 #include <thread>
@@ -352,6 +353,46 @@ TEST_F(CApi, MemorySaveTwoCallPattern) {
         ASSERT_EQ(a1, a2) << "step " << i;
     }
     verve_agent_destroy(loaded);
+}
+
+// The size query keeps the bytes it serialised for the call with a buffer; any change to an agent
+// in between must give the agent as it is now, never the kept bytes.
+TEST_F(CApi, MemorySaveAfterAChangeIsTheAgentAsItIsNow) {
+    const std::vector<std::function<void()>> changes = {
+        [&] { step(1, 0.3f, 1.0f); },
+        [&] { ASSERT_EQ(verve_agent_end_episode(agent_, -1.0f), VERVE_OK); },
+        [&] { ASSERT_EQ(verve_agent_set_learning(agent_, 0), VERVE_OK); },
+        [&] { ASSERT_EQ(verve_agent_set_learning(agent_, 1), VERVE_OK); },
+        [&] { ASSERT_EQ(verve_agent_reset_short_term_memory(agent_), VERVE_OK); },
+    };
+    for (std::size_t i = 0; i < changes.size(); ++i) {
+        step(static_cast<int32_t>(i), 0.1f, 0.5f);  // live traces and a previous state to change
+        size_t before = 0;
+        ASSERT_EQ(verve_agent_save_memory(agent_, nullptr, &before), VERVE_OK);
+        const std::string was = saved();
+        ASSERT_EQ(verve_agent_save_memory(agent_, nullptr, &before), VERVE_OK);
+        changes[i]();
+        std::string now(before + 4096, '\0');
+        size_t size = now.size();
+        ASSERT_EQ(verve_agent_save_memory(agent_, &now[0], &size), VERVE_OK) << "change " << i;
+        now.resize(size);
+        EXPECT_NE(now, was) << "change " << i << " served the save from before it";
+        EXPECT_EQ(now, saved()) << "change " << i;
+    }
+    // A change to another agent also drops the kept bytes (agents may share state); the save stays right.
+    verve_agent* other = nullptr;
+    const verve_agent_desc d = smallDesc();
+    ASSERT_EQ(verve_agent_create(&d, &other), VERVE_OK);
+    size_t size = 0;
+    ASSERT_EQ(verve_agent_save_memory(agent_, nullptr, &size), VERVE_OK);
+    const int32_t disc = 0;
+    const float cont = 0.0f;
+    uint32_t action = 0;
+    ASSERT_EQ(verve_agent_update(other, 0.0f, &disc, 1, &cont, 1, 0.1f, &action), VERVE_OK);
+    std::string xml(size, '\0');
+    ASSERT_EQ(verve_agent_save_memory(agent_, &xml[0], &size), VERVE_OK);
+    EXPECT_EQ(xml, saved());
+    verve_agent_destroy(other);
 }
 
 TEST_F(CApi, BadSavesGiveFormatOrVersionErrorsAndNoAgent) {

@@ -345,6 +345,18 @@ TEST_F(BatchRefusal, BadRewardDtNullAgentAndOffsetsChangeNothing) {
               VERVE_OK) << "an empty batch is fine";
 }
 
+TEST_F(BatchRefusal, ABatchUpdateDropsTheSaveASizeQueryKept) {
+    size_t size = 0;
+    ASSERT_EQ(verve_agent_save_memory(agents_[1], nullptr, &size), VERVE_OK);  // keeps the bytes
+    ASSERT_EQ(update(), VERVE_OK) << verve_last_error();
+    std::string bytes(size + 4096, '\0');
+    size_t capacity = bytes.size();
+    ASSERT_EQ(verve_agent_save_memory(agents_[1], &bytes[0], &capacity), VERVE_OK);
+    bytes.resize(capacity);
+    EXPECT_NE(bytes, before_[1]) << "the save of before the batch update was delivered";
+    EXPECT_EQ(bytes, saved(agents_[1]));
+}
+
 TEST(BatchDesc, BadDescriptorsAreRefused) {
     verve_batch* b = nullptr;
     EXPECT_EQ(verve_batch_desc_default(nullptr), VERVE_ERROR_INVALID_ARGUMENT);

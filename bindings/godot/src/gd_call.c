@@ -1,0 +1,175 @@
+#include "gd_call.h"
+
+#include <float.h>
+#include <math.h>
+#include <stdarg.h>
+#include <stdio.h>
+#include <string.h>
+
+int vg_begin(vg_call* c, vg_agent* self, const char* method, int argc, godot_variant** argv, int min_args,
+             int max_args) {
+    c->self = self;
+    c->method = method;
+    c->argc = argc;
+    c->argv = argv;
+    if (self) self->last_error[0] = '\0';
+    if (!self) return vg_fail(c, "no VerveAgent instance (was the script attached to another object?)");
+    if (argc < min_args || argc > max_args) {
+        if (min_args == max_args) return vg_fail(c, "takes %d arguments (got %d)", min_args, argc);
+        return vg_fail(c, "takes %d to %d arguments (got %d)", min_args, max_args, argc);
+    }
+    return 1;
+}
+
+int vg_fail(vg_call* c, const char* format, ...) {
+    char full[VG_ERROR_SIZE];
+    char function[64];
+    int prefix = snprintf(full, sizeof full, "VerveAgent.%s: ", c->method);
+    va_list args;
+    if (prefix < 0 || (size_t)prefix >= sizeof full) prefix = 0;
+    va_start(args, format);
+    vsnprintf(full + prefix, sizeof full - (size_t)prefix, format, args);
+    va_end(args);
+    if (c->self) memcpy(c->self->last_error, full, sizeof full);
+    snprintf(function, sizeof function, "VerveAgent.%s", c->method);
+    vg_print_error(function, full + prefix); /* Godot prints "ERROR: <function>: <message>" */
+    return 0;
+}
+
+int vg_check(vg_call* c, verve_result r) {
+    if (r == VERVE_OK) return 1;
+    return vg_fail(c, "%s [%s]", verve_last_error(), verve_result_name(r));
+}
+
+int vg_agent_handle(vg_call* c, verve_agent** out) {
+    *out = c->self->handle;
+    if (*out) return 1;
+    return vg_fail(c, "this VerveAgent has no agent: call create(), load() or load_bytes() first "
+                      "(or it was closed)");
+}
+
+const godot_variant* vg_arg(const vg_call* c, int i) {
+    return i < c->argc ? c->argv[i] : NULL;
+}
+
+float vg_to_float(double d) {
+    if (d > FLT_MAX) return (float)HUGE_VAL;
+    if (d < -FLT_MAX) return (float)-HUGE_VAL;
+    return (float)d;
+}
+
+/* int or float variant into *out; 0 for any other type. */
+static int vg_number(const godot_variant* v, double* out) {
+    switch (vg_core->godot_variant_get_type(v)) {
+    case GODOT_VARIANT_TYPE_INT: *out = (double)vg_core->godot_variant_as_int(v); return 1;
+    case GODOT_VARIANT_TYPE_REAL: *out = vg_core->godot_variant_as_real(v); return 1;
+    default: return 0;
+    }
+}
+
+int vg_arg_float(vg_call* c, int i, const char* name, float* out) {
+    double d = 0.0;
+    if (!vg_number(c->argv[i], &d)) return vg_fail(c, "%s must be a number (got %s)", name, vg_type_name(c->argv[i]));
+    *out = vg_to_float(d);
+    return 1;
+}
+
+int vg_arg_bool(vg_call* c, int i, const char* name, int* out) {
+    if (!vg_arg_type(c, i, name, GODOT_VARIANT_TYPE_BOOL)) return 0;
+    *out = vg_core->godot_variant_as_bool(c->argv[i]) ? 1 : 0;
+    return 1;
+}
+
+int vg_arg_type(vg_call* c, int i, const char* name, godot_variant_type type) {
+    const char* expected;
+    if (vg_core->godot_variant_get_type(c->argv[i]) == type) return 1;
+    expected = type == GODOT_VARIANT_TYPE_STRING ? "a String"
+             : type == GODOT_VARIANT_TYPE_DICTIONARY ? "a Dictionary"
+             : type == GODOT_VARIANT_TYPE_ARRAY ? "an Array"
+             : type == GODOT_VARIANT_TYPE_POOL_BYTE_ARRAY ? "a PoolByteArray"
+             : type == GODOT_VARIANT_TYPE_BOOL ? "a bool" : "of another type";
+    return vg_fail(c, "%s must be %s (got %s)", name, expected, vg_type_name(c->argv[i]));
+}
+
+/* Reads element i of a list into out; 0 after reporting a wrong element. */
+typedef int (*vg_element_fn)(vg_call* c, const godot_variant* element, const char* name, uint32_t i, void* out);
+
+static int vg_read_list(vg_call* c, const godot_variant* v, const char* name, godot_variant_type pool_type,
+                        uint32_t max, uint32_t* n, vg_element_fn read, void* out) {
+    godot_variant_type t = vg_core->godot_variant_get_type(v);
+    godot_array array;
+    godot_int size, i;
+    int ok = 1;
+    *n = 0;
+    if (t == GODOT_VARIANT_TYPE_NIL) return 1;
+    if (t != pool_type && t != GODOT_VARIANT_TYPE_ARRAY)
+        return vg_fail(c, "%s must be a %s or an Array (got %s)", name,
+                       pool_type == GODOT_VARIANT_TYPE_POOL_INT_ARRAY ? "PoolIntArray" : "PoolRealArray",
+                       vg_type_name(v));
+    /* Pool arrays convert to an Array of variants: one path for both kinds of list. */
+    array = vg_core->godot_variant_as_array(v);
+    size = vg_core->godot_array_size(&array);
+    if ((uint64_t)size > max) ok = vg_fail(c, "%s has %d values; an agent has at most %u", name, (int)size, max);
+    for (i = 0; ok && i < size; ++i)
+        ok = read(c, vg_core->godot_array_operator_index_const(&array, i), name, (uint32_t)i, out);
+    vg_core->godot_array_destroy(&array);
+    if (ok) *n = (uint32_t)size;
+    return ok;
+}
+
+static int vg_int_element(vg_call* c, const godot_variant* e, const char* name, uint32_t i, void* out) {
+    int64_t v;
+    if (vg_core->godot_variant_get_type(e) != GODOT_VARIANT_TYPE_INT)
+        return vg_fail(c, "%s[%u] must be an int (got %s)", name, i, vg_type_name(e));
+    v = vg_core->godot_variant_as_int(e);
+    if (v < INT32_MIN || v > INT32_MAX) return vg_fail(c, "%s[%u] is out of range", name, i);
+    ((int32_t*)out)[i] = (int32_t)v;
+    return 1;
+}
+
+static int vg_float_element(vg_call* c, const godot_variant* e, const char* name, uint32_t i, void* out) {
+    double d = 0.0;
+    if (!vg_number(e, &d)) return vg_fail(c, "%s[%u] must be a number (got %s)", name, i, vg_type_name(e));
+    ((float*)out)[i] = vg_to_float(d);
+    return 1;
+}
+
+int vg_read_ints(vg_call* c, const godot_variant* v, const char* name, int32_t* out, uint32_t max, uint32_t* n) {
+    return vg_read_list(c, v, name, GODOT_VARIANT_TYPE_POOL_INT_ARRAY, max, n, vg_int_element, out);
+}
+
+int vg_read_floats(vg_call* c, const godot_variant* v, const char* name, float* out, uint32_t max, uint32_t* n) {
+    return vg_read_list(c, v, name, GODOT_VARIANT_TYPE_POOL_REAL_ARRAY, max, n, vg_float_element, out);
+}
+
+int vg_string_is(const godot_variant* v, const char* text) {
+    godot_char_string s;
+    int same;
+    if (!v || vg_core->godot_variant_get_type(v) != GODOT_VARIANT_TYPE_STRING) return 0;
+    s = vg_utf8(v, 0);
+    same = strcmp(vg_core->godot_char_string_get_data(&s), text) == 0;
+    vg_core->godot_char_string_destroy(&s);
+    return same;
+}
+
+int vg_dict_fields(vg_call* c, const godot_dictionary* dict, const char* what, const void* table, size_t stride,
+                   int count, const godot_variant** values) {
+    godot_array keys = vg_core->godot_dictionary_keys(dict);
+    godot_int k, n = vg_core->godot_array_size(&keys);
+    int ok = 1, j;
+    for (j = 0; j < count; ++j) values[j] = NULL;
+    for (k = 0; ok && k < n; ++k) {
+        const godot_variant* key = vg_core->godot_array_operator_index_const(&keys, k);
+        for (j = 0; j < count; ++j)
+            if (vg_string_is(key, *(const char* const*)((const char*)table + (size_t)j * stride))) break;
+        if (j < count) {
+            values[j] = vg_core->godot_dictionary_operator_index_const(dict, key);
+        } else {
+            godot_char_string name = vg_utf8(key, 0);
+            ok = vg_fail(c, "unknown %s '%s'", what, vg_core->godot_char_string_get_data(&name));
+            vg_core->godot_char_string_destroy(&name);
+        }
+    }
+    vg_core->godot_array_destroy(&keys);
+    return ok;
+}

@@ -1,0 +1,189 @@
+#include "gd_options.h"
+
+#include <stddef.h>
+#include <string.h>
+
+typedef enum vg_kind { VG_UINT, VG_FLOAT, VG_SEED, VG_BOOL, VG_ENUM, VG_DISCRETE_SENSORS, VG_CIRCULAR } vg_kind;
+
+typedef struct vg_option {
+    const char* name;
+    size_t offset;
+    vg_kind kind;
+    const char* const* names; /* VG_ENUM: value i is names[i] */
+} vg_option;
+
+static const char* const vg_allocation_names[] = {"dynamic", "full", NULL};
+static const char* const vg_curiosity_names[] = {"none", "novelty", "progress", NULL};
+static const char* const vg_prediction_names[] = {"categorical", "ordinal", NULL};
+
+#define VG_OPTION(name, member, kind, names) {name, offsetof(verve_agent_desc, member), kind, names}
+static const vg_option vg_options[] = {
+    VG_OPTION("discrete_sensors", discrete_sensor_values, VG_DISCRETE_SENSORS, NULL),
+    VG_OPTION("continuous_sensor_circular", continuous_sensor_circular, VG_CIRCULAR, NULL),
+    VG_OPTION("actions", num_actions, VG_UINT, NULL),
+    VG_OPTION("resolution", resolution, VG_UINT, NULL),
+    VG_OPTION("rbf_allocation", rbf_allocation, VG_ENUM, vg_allocation_names),
+    VG_OPTION("tau_value", tau_value, VG_FLOAT, NULL),
+    VG_OPTION("tau_discount", tau_discount, VG_FLOAT, NULL),
+    VG_OPTION("tau_eligibility", tau_eligibility, VG_FLOAT, NULL),
+    VG_OPTION("policy_multiplier", policy_multiplier, VG_FLOAT, NULL),
+    VG_OPTION("trace_threshold", trace_threshold, VG_FLOAT, NULL),
+    VG_OPTION("seed", seed, VG_SEED, NULL),
+    VG_OPTION("planning", planning, VG_BOOL, NULL),
+    VG_OPTION("tau_model", tau_model, VG_FLOAT, NULL),
+    VG_OPTION("max_planning_steps", max_planning_steps, VG_UINT, NULL),
+    VG_OPTION("planning_uncertainty_threshold", planning_uncertainty_threshold, VG_FLOAT, NULL),
+    VG_OPTION("curiosity", curiosity, VG_ENUM, vg_curiosity_names),
+    VG_OPTION("curiosity_factor", curiosity_factor, VG_FLOAT, NULL),
+    VG_OPTION("planning_accumulates_uncertainty", planning_accumulates_uncertainty, VG_BOOL, NULL),
+    VG_OPTION("learn_from_real_steps", learn_from_real_steps, VG_BOOL, NULL),
+    VG_OPTION("discrete_prediction", discrete_prediction, VG_ENUM, vg_prediction_names),
+};
+#define VG_OPTION_COUNT (sizeof vg_options / sizeof vg_options[0])
+
+static int vg_option_error(vg_call* c, const vg_option* o, const char* expected, const godot_variant* v) {
+    return vg_fail(c, "option '%s' must be %s (got %s)", o->name, expected, vg_type_name(v));
+}
+
+static int vg_read_discrete_sensors(vg_call* c, const vg_option* o, const godot_variant* v, verve_agent_desc* d) {
+    int32_t values[VERVE_MAX_DISCRETE_SENSORS];
+    uint32_t n = 0, i;
+    if (!vg_read_ints(c, v, o->name, values, VERVE_MAX_DISCRETE_SENSORS, &n)) return 0;
+    for (i = 0; i < n; ++i) {
+        if (values[i] < 0) return vg_fail(c, "option '%s': value counts are not negative (got %d)", o->name, values[i]);
+        d->discrete_sensor_values[i] = (uint32_t)values[i];
+    }
+    d->num_discrete_sensors = n;
+    return 1;
+}
+
+static int vg_read_circular(vg_call* c, const vg_option* o, const godot_variant* v, verve_agent_desc* d) {
+    godot_array array;
+    godot_int n, i;
+    int ok = 1;
+    if (vg_core->godot_variant_get_type(v) != GODOT_VARIANT_TYPE_ARRAY)
+        return vg_option_error(c, o, "an Array of bools, one per continuous sensor", v);
+    array = vg_core->godot_variant_as_array(v);
+    n = vg_core->godot_array_size(&array);
+    if (n > VERVE_MAX_CONTINUOUS_SENSORS)
+        ok = vg_fail(c, "option '%s' has %d sensors; an agent has at most %d", o->name, (int)n,
+                     VERVE_MAX_CONTINUOUS_SENSORS);
+    for (i = 0; ok && i < n; ++i) {
+        const godot_variant* e = vg_core->godot_array_operator_index_const(&array, i);
+        if (vg_core->godot_variant_get_type(e) != GODOT_VARIANT_TYPE_BOOL)
+            ok = vg_fail(c, "option '%s'[%d] must be a bool (true: the sensor wraps around) (got %s)", o->name,
+                         (int)i, vg_type_name(e));
+        else
+            d->continuous_sensor_circular[i] = vg_core->godot_variant_as_bool(e) ? 1 : 0;
+    }
+    vg_core->godot_array_destroy(&array);
+    if (ok) d->num_continuous_sensors = (uint32_t)n;
+    return ok;
+}
+
+static int vg_read_enum(vg_call* c, const vg_option* o, const godot_variant* v, uint32_t* out) {
+    char expected[128] = "one of";
+    uint32_t i = 0;
+    while (o->names[i] && !vg_string_is(v, o->names[i])) ++i;
+    if (o->names[i]) {
+        *out = i;
+        return 1;
+    }
+    for (i = 0; o->names[i]; ++i) {
+        strcat(expected, i ? ", \"" : " \"");
+        strcat(expected, o->names[i]);
+        strcat(expected, "\"");
+    }
+    return vg_option_error(c, o, expected, v);
+}
+
+static int vg_read_option(vg_call* c, const vg_option* o, const godot_variant* v, verve_agent_desc* d) {
+    char* p = (char*)d + o->offset;
+    godot_variant_type t = vg_core->godot_variant_get_type(v);
+    int64_t i = t == GODOT_VARIANT_TYPE_INT ? vg_core->godot_variant_as_int(v) : -1;
+    switch (o->kind) {
+    case VG_UINT:
+        if (t != GODOT_VARIANT_TYPE_INT || i < 0 || i > (int64_t)UINT32_MAX)
+            return vg_option_error(c, o, "a non-negative int", v);
+        *(uint32_t*)p = (uint32_t)i;
+        return 1;
+    case VG_SEED:
+        if (t != GODOT_VARIANT_TYPE_INT || i < 0) return vg_option_error(c, o, "a non-negative int", v);
+        *(uint64_t*)p = (uint64_t)i;
+        return 1;
+    case VG_FLOAT:
+        if (t == GODOT_VARIANT_TYPE_INT) *(float*)p = (float)i;
+        else if (t == GODOT_VARIANT_TYPE_REAL) *(float*)p = vg_to_float(vg_core->godot_variant_as_real(v));
+        else return vg_option_error(c, o, "a number", v);
+        return 1;
+    case VG_BOOL:
+        if (t != GODOT_VARIANT_TYPE_BOOL) return vg_option_error(c, o, "a bool", v);
+        *(uint32_t*)p = vg_core->godot_variant_as_bool(v) ? 1u : 0u;
+        return 1;
+    case VG_ENUM: return vg_read_enum(c, o, v, (uint32_t*)p);
+    case VG_DISCRETE_SENSORS: return vg_read_discrete_sensors(c, o, v, d);
+    case VG_CIRCULAR: return vg_read_circular(c, o, v, d);
+    }
+    return 0;
+}
+
+int vg_options_read(vg_call* c, int i, verve_agent_desc* d) {
+    const godot_variant* arg = vg_arg(c, i);
+    const godot_variant* values[VG_OPTION_COUNT];
+    godot_dictionary dict;
+    size_t k;
+    int ok;
+    verve_agent_desc_default(d);
+    if (!arg) return 1;
+    if (!vg_arg_type(c, i, "options", GODOT_VARIANT_TYPE_DICTIONARY)) return 0;
+    dict = vg_core->godot_variant_as_dictionary(arg);
+    ok = vg_dict_fields(c, &dict, "option", vg_options, sizeof vg_options[0], (int)VG_OPTION_COUNT, values);
+    for (k = 0; ok && k < VG_OPTION_COUNT; ++k)
+        if (values[k]) ok = vg_read_option(c, &vg_options[k], values[k], d);
+    vg_core->godot_dictionary_destroy(&dict);
+    return ok;
+}
+
+static godot_variant vg_option_variant(const vg_option* o, const verve_agent_desc* d) {
+    const char* p = (const char*)d + o->offset;
+    godot_array list;
+    godot_variant v;
+    uint32_t i, n;
+    switch (o->kind) {
+    case VG_UINT: return vg_variant_int(*(const uint32_t*)p);
+    case VG_SEED: return vg_variant_int((int64_t)*(const uint64_t*)p);
+    case VG_FLOAT: return vg_variant_real(*(const float*)p);
+    case VG_BOOL: return vg_variant_bool(*(const uint32_t*)p != 0);
+    case VG_ENUM: {
+        uint32_t u = *(const uint32_t*)p;
+        for (i = 0; o->names[i] && i < u; ++i) {}
+        return vg_variant_string(o->names[i] ? o->names[i] : "unknown");
+    }
+    case VG_DISCRETE_SENSORS:
+    case VG_CIRCULAR:
+        vg_core->godot_array_new(&list);
+        n = o->kind == VG_CIRCULAR ? d->num_continuous_sensors : d->num_discrete_sensors;
+        if (n > (o->kind == VG_CIRCULAR ? VERVE_MAX_CONTINUOUS_SENSORS : VERVE_MAX_DISCRETE_SENSORS)) n = 0;
+        for (i = 0; i < n; ++i) {
+            godot_variant e = o->kind == VG_CIRCULAR ? vg_variant_bool(d->continuous_sensor_circular[i])
+                                                     : vg_variant_int(d->discrete_sensor_values[i]);
+            vg_core->godot_array_append(&list, &e);
+            vg_core->godot_variant_destroy(&e);
+        }
+        vg_core->godot_variant_new_array(&v, &list);
+        vg_core->godot_array_destroy(&list);
+        return v;
+    }
+    return vg_variant_nil();
+}
+
+godot_variant vg_options_variant(const verve_agent_desc* d) {
+    godot_dictionary dict;
+    godot_variant v;
+    size_t i;
+    vg_core->godot_dictionary_new(&dict);
+    for (i = 0; i < VG_OPTION_COUNT; ++i) vg_dict_set(&dict, vg_options[i].name, vg_option_variant(&vg_options[i], d));
+    vg_core->godot_variant_new_dictionary(&v, &dict);
+    vg_core->godot_dictionary_destroy(&dict);
+    return v;
+}

@@ -1,0 +1,355 @@
+/* verve_agent_methods.c - what each VerveAgent method does: read its arguments, call the C ABI,
+ * turn the answer into Godot values. A failure prints a Godot error with the library's message
+ * and returns false, -1 or null; it never changes the agent. */
+#include "verve_agent_methods.h"
+
+#include <stdlib.h>
+#include <string.h>
+
+#include "gd_options.h"
+
+/* sample_values refuses more points than this instead of allocating without bound. */
+#define VG_MAX_SAMPLES (1u << 24)
+
+#define VG_METHOD(name) \
+    godot_variant vg_##name(godot_object* object, void* method_data, void* user_data, int argc, godot_variant** argv)
+#define VG_UNUSED (void)object, (void)method_data
+
+/* Replaces the agent held by self with `fresh` (the old one, if any, is destroyed). */
+static void vg_adopt(vg_agent* self, verve_agent* fresh) {
+    verve_agent_destroy(self->handle);
+    self->handle = fresh;
+}
+
+VG_METHOD(create) {
+    vg_call c;
+    verve_agent_desc d;
+    verve_agent* fresh = NULL;
+    VG_UNUSED;
+    if (!vg_begin(&c, user_data, "create", argc, argv, 0, 1) || !vg_options_read(&c, 0, &d) ||
+        !vg_check(&c, verve_agent_create(&d, &fresh)))
+        return vg_variant_bool(0);
+    vg_adopt(c.self, fresh);
+    return vg_variant_bool(1);
+}
+
+VG_METHOD(load) {
+    vg_call c;
+    verve_agent* fresh = NULL;
+    godot_char_string path;
+    int ok;
+    VG_UNUSED;
+    if (!vg_begin(&c, user_data, "load", argc, argv, 1, 1) || !vg_arg_type(&c, 0, "path", GODOT_VARIANT_TYPE_STRING))
+        return vg_variant_bool(0);
+    path = vg_utf8(argv[0], 1);
+    ok = vg_check(&c, verve_agent_load(vg_core->godot_char_string_get_data(&path), &fresh));
+    vg_core->godot_char_string_destroy(&path);
+    if (ok) vg_adopt(c.self, fresh);
+    return vg_variant_bool(ok);
+}
+
+VG_METHOD(load_bytes) {
+    vg_call c;
+    verve_agent* fresh = NULL;
+    godot_pool_byte_array bytes;
+    godot_pool_byte_array_read_access* read;
+    int ok;
+    VG_UNUSED;
+    if (!vg_begin(&c, user_data, "load_bytes", argc, argv, 1, 1) ||
+        !vg_arg_type(&c, 0, "data", GODOT_VARIANT_TYPE_POOL_BYTE_ARRAY))
+        return vg_variant_bool(0);
+    bytes = vg_core->godot_variant_as_pool_byte_array(argv[0]);
+    read = vg_core->godot_pool_byte_array_read(&bytes);
+    ok = vg_check(&c, verve_agent_load_memory(vg_core->godot_pool_byte_array_read_access_ptr(read),
+                                              (size_t)vg_core->godot_pool_byte_array_size(&bytes), &fresh));
+    vg_core->godot_pool_byte_array_read_access_destroy(read);
+    vg_core->godot_pool_byte_array_destroy(&bytes);
+    if (ok) vg_adopt(c.self, fresh);
+    return vg_variant_bool(ok);
+}
+
+VG_METHOD(save) {
+    vg_call c;
+    verve_agent* a;
+    godot_char_string path;
+    int ok;
+    VG_UNUSED;
+    if (!vg_begin(&c, user_data, "save", argc, argv, 1, 1) || !vg_agent_handle(&c, &a) ||
+        !vg_arg_type(&c, 0, "path", GODOT_VARIANT_TYPE_STRING))
+        return vg_variant_bool(0);
+    path = vg_utf8(argv[0], 1);
+    ok = vg_check(&c, verve_agent_save(a, vg_core->godot_char_string_get_data(&path)));
+    vg_core->godot_char_string_destroy(&path);
+    return vg_variant_bool(ok);
+}
+
+VG_METHOD(save_bytes) {
+    vg_call c;
+    verve_agent* a;
+    size_t size = 0;
+    godot_pool_byte_array bytes;
+    godot_pool_byte_array_write_access* write;
+    godot_variant out;
+    int ok;
+    VG_UNUSED;
+    if (!vg_begin(&c, user_data, "save_bytes", argc, argv, 0, 0) || !vg_agent_handle(&c, &a) ||
+        !vg_check(&c, verve_agent_save_memory(a, NULL, &size)))
+        return vg_variant_nil();
+    if (size > (size_t)INT32_MAX) {
+        vg_fail(&c, "the save needs %lu bytes, more than a PoolByteArray holds", (unsigned long)size);
+        return vg_variant_nil();
+    }
+    vg_core->godot_pool_byte_array_new(&bytes);
+    vg_core->godot_pool_byte_array_resize(&bytes, (godot_int)size);
+    write = vg_core->godot_pool_byte_array_write(&bytes);
+    ok = vg_check(&c, verve_agent_save_memory(a, vg_core->godot_pool_byte_array_write_access_ptr(write), &size));
+    vg_core->godot_pool_byte_array_write_access_destroy(write);
+    if (ok) vg_core->godot_pool_byte_array_resize(&bytes, (godot_int)size);
+    if (ok) vg_core->godot_variant_new_pool_byte_array(&out, &bytes);
+    else out = vg_variant_nil();
+    vg_core->godot_pool_byte_array_destroy(&bytes);
+    return out;
+}
+
+VG_METHOD(update) {
+    vg_call c;
+    verve_agent* a;
+    float reward = 0.0f, dt = 0.0f;
+    int32_t discrete[VERVE_MAX_DISCRETE_SENSORS];
+    float continuous[VERVE_MAX_CONTINUOUS_SENSORS];
+    uint32_t n_discrete = 0, n_continuous = 0, action = 0;
+    VG_UNUSED;
+    if (!vg_begin(&c, user_data, "update", argc, argv, 4, 4) || !vg_agent_handle(&c, &a) ||
+        !vg_arg_float(&c, 0, "reward", &reward) ||
+        !vg_read_ints(&c, argv[1], "discrete", discrete, VERVE_MAX_DISCRETE_SENSORS, &n_discrete) ||
+        !vg_read_floats(&c, argv[2], "continuous", continuous, VERVE_MAX_CONTINUOUS_SENSORS, &n_continuous) ||
+        !vg_arg_float(&c, 3, "dt", &dt) ||
+        !vg_check(&c, verve_agent_update(a, reward, discrete, n_discrete, continuous, n_continuous, dt, &action)))
+        return vg_variant_int(-1);
+    return vg_variant_int(action);
+}
+
+VG_METHOD(end_episode) {
+    vg_call c;
+    verve_agent* a;
+    float reward = 0.0f;
+    VG_UNUSED;
+    return vg_variant_bool(vg_begin(&c, user_data, "end_episode", argc, argv, 1, 1) && vg_agent_handle(&c, &a) &&
+                           vg_arg_float(&c, 0, "final_reward", &reward) &&
+                           vg_check(&c, verve_agent_end_episode(a, reward)));
+}
+
+VG_METHOD(reset_short_term_memory) {
+    vg_call c;
+    verve_agent* a;
+    VG_UNUSED;
+    return vg_variant_bool(vg_begin(&c, user_data, "reset_short_term_memory", argc, argv, 0, 0) &&
+                           vg_agent_handle(&c, &a) && vg_check(&c, verve_agent_reset_short_term_memory(a)));
+}
+
+VG_METHOD(get_options) {
+    vg_call c;
+    verve_agent* a;
+    verve_agent_desc d;
+    VG_UNUSED;
+    verve_agent_desc_default(&d); /* sets struct_size */
+    if (!vg_begin(&c, user_data, "get_options", argc, argv, 0, 0) || !vg_agent_handle(&c, &a) ||
+        !vg_check(&c, verve_agent_get_desc(a, &d)))
+        return vg_variant_nil();
+    return vg_options_variant(&d);
+}
+
+VG_METHOD(get_default_options) {
+    vg_call c;
+    verve_agent_desc d;
+    VG_UNUSED;
+    if (!vg_begin(&c, user_data, "get_default_options", argc, argv, 0, 0)) return vg_variant_nil();
+    verve_agent_desc_default(&d);
+    return vg_options_variant(&d);
+}
+
+VG_METHOD(get_value) {
+    vg_call c;
+    verve_agent* a;
+    float v = 0.0f;
+    VG_UNUSED;
+    if (!vg_begin(&c, user_data, "get_value", argc, argv, 0, 0) || !vg_agent_handle(&c, &a) ||
+        !vg_check(&c, verve_agent_get_value(a, &v)))
+        return vg_variant_nil();
+    return vg_variant_real(v);
+}
+
+VG_METHOD(get_td_error) {
+    vg_call c;
+    verve_agent* a;
+    float v = 0.0f;
+    VG_UNUSED;
+    if (!vg_begin(&c, user_data, "get_td_error", argc, argv, 0, 0) || !vg_agent_handle(&c, &a) ||
+        !vg_check(&c, verve_agent_get_td_error(a, &v)))
+        return vg_variant_nil();
+    return vg_variant_real(v);
+}
+
+VG_METHOD(get_rbf_count) {
+    vg_call c;
+    verve_agent* a;
+    uint32_t n = 0;
+    VG_UNUSED;
+    if (!vg_begin(&c, user_data, "get_rbf_count", argc, argv, 0, 0) || !vg_agent_handle(&c, &a) ||
+        !vg_check(&c, verve_agent_get_rbf_count(a, &n)))
+        return vg_variant_nil();
+    return vg_variant_int(n);
+}
+
+VG_METHOD(get_stats) {
+    vg_call c;
+    verve_agent* a;
+    verve_agent_stats s;
+    godot_dictionary dict;
+    godot_variant out;
+    VG_UNUSED;
+    memset(&s, 0, sizeof s);
+    s.struct_size = (uint32_t)sizeof s;
+    if (!vg_begin(&c, user_data, "get_stats", argc, argv, 0, 0) || !vg_agent_handle(&c, &a) ||
+        !vg_check(&c, verve_agent_get_stats(a, &s)))
+        return vg_variant_nil();
+    vg_core->godot_dictionary_new(&dict);
+    vg_dict_set(&dict, "steps", vg_variant_int((int64_t)s.steps));
+    vg_dict_set(&dict, "rbf_count", vg_variant_int(s.rbf_count));
+    vg_dict_set(&dict, "live_traces", vg_variant_int(s.live_traces));
+    vg_dict_set(&dict, "value", vg_variant_real(s.value));
+    vg_dict_set(&dict, "td_error", vg_variant_real(s.td_error));
+    vg_dict_set(&dict, "model_error", vg_variant_real(s.model_error));
+    vg_dict_set(&dict, "predicted_uncertainty", vg_variant_real(s.predicted_uncertainty));
+    vg_dict_set(&dict, "planning_steps", vg_variant_int(s.planning_steps));
+    vg_dict_set(&dict, "curiosity_reward", vg_variant_real(s.curiosity_reward));
+    vg_core->godot_variant_new_dictionary(&out, &dict);
+    vg_core->godot_dictionary_destroy(&dict);
+    return out;
+}
+
+/* An int variant within [lo, hi] into *out. */
+static int vg_int_in(const godot_variant* v, int64_t lo, int64_t hi, uint32_t* out) {
+    int64_t i;
+    if (!v || vg_core->godot_variant_get_type(v) != GODOT_VARIANT_TYPE_INT) return 0;
+    i = vg_core->godot_variant_as_int(v);
+    if (i < lo || i > hi) return 0;
+    *out = (uint32_t)i;
+    return 1;
+}
+
+/* One axis: {"kind": "continuous" or "discrete", "index": i, "samples": n}; a discrete axis's
+ * samples default to that sensor's value count. */
+static int vg_read_axis(vg_call* c, const godot_variant* v, uint32_t i, const verve_agent_desc* d,
+                        verve_value_axis* axis) {
+    static const char* const keys[] = {"kind", "index", "samples"};
+    const godot_variant* values[3];
+    godot_dictionary dict;
+    int ok;
+    if (vg_core->godot_variant_get_type(v) != GODOT_VARIANT_TYPE_DICTIONARY)
+        return vg_fail(c, "axes[%u] must be a Dictionary {\"kind\": ..., \"index\": ..., \"samples\": ...} (got %s)",
+                       i, vg_type_name(v));
+    dict = vg_core->godot_variant_as_dictionary(v);
+    ok = vg_dict_fields(c, &dict, "axis key", keys, sizeof keys[0], 3, values);
+    if (ok && vg_string_is(values[0], "continuous")) axis->kind = VERVE_SENSOR_CONTINUOUS;
+    else if (ok && vg_string_is(values[0], "discrete")) axis->kind = VERVE_SENSOR_DISCRETE;
+    else if (ok) ok = vg_fail(c, "axes[%u].kind must be \"continuous\" or \"discrete\"", i);
+    if (ok && !vg_int_in(values[1], 0, INT32_MAX, &axis->index))
+        ok = vg_fail(c, "axes[%u].index must be a sensor index from 0", i);
+    if (ok && !values[2] && axis->kind == VERVE_SENSOR_DISCRETE)
+        axis->samples = axis->index < d->num_discrete_sensors ? d->discrete_sensor_values[axis->index] : 0;
+    else if (ok && !vg_int_in(values[2], 1, VG_MAX_SAMPLES, &axis->samples))
+        ok = vg_fail(c, "axes[%u].samples must be an int from 1 to %u", i, VG_MAX_SAMPLES);
+    vg_core->godot_dictionary_destroy(&dict);
+    return ok;
+}
+
+VG_METHOD(sample_values) {
+    vg_call c;
+    verve_agent* a;
+    verve_agent_desc d;
+    verve_value_axis axes[2];
+    int32_t discrete[VERVE_MAX_DISCRETE_SENSORS] = {0};
+    float continuous[VERVE_MAX_CONTINUOUS_SENSORS] = {0};
+    uint32_t n_discrete, n_continuous, n_axes = 0, i;
+    uint64_t total;
+    godot_array list;
+    godot_pool_real_array values;
+    godot_pool_real_array_write_access* write;
+    godot_variant out;
+    int ok = 1;
+    VG_UNUSED;
+    verve_agent_desc_default(&d);
+    if (!vg_begin(&c, user_data, "sample_values", argc, argv, 1, 3) || !vg_agent_handle(&c, &a) ||
+        !vg_check(&c, verve_agent_get_desc(a, &d)) || !vg_arg_type(&c, 0, "axes", GODOT_VARIANT_TYPE_ARRAY))
+        return vg_variant_nil();
+    /* Sensors not given are held at 0 (the first discrete value, the middle of a continuous range). */
+    n_discrete = d.num_discrete_sensors;
+    n_continuous = d.num_continuous_sensors;
+    if ((argc > 1 && !vg_read_ints(&c, argv[1], "base_discrete", discrete, VERVE_MAX_DISCRETE_SENSORS, &n_discrete)) ||
+        (argc > 2 && !vg_read_floats(&c, argv[2], "base_continuous", continuous, VERVE_MAX_CONTINUOUS_SENSORS,
+                                     &n_continuous)))
+        return vg_variant_nil();
+    list = vg_core->godot_variant_as_array(argv[0]);
+    n_axes = (uint32_t)vg_core->godot_array_size(&list);
+    if (n_axes < 1 || n_axes > 2) ok = vg_fail(&c, "give 1 or 2 axes (got %u)", n_axes);
+    for (i = 0; ok && i < n_axes; ++i)
+        ok = vg_read_axis(&c, vg_core->godot_array_operator_index_const(&list, (godot_int)i), i, &d, &axes[i]);
+    vg_core->godot_array_destroy(&list);
+    if (!ok) return vg_variant_nil();
+    total = (uint64_t)axes[0].samples * (n_axes == 2 ? axes[1].samples : 1);
+    if (total > VG_MAX_SAMPLES) {
+        vg_fail(&c, "%lu samples; at most %u", (unsigned long)total, VG_MAX_SAMPLES);
+        return vg_variant_nil();
+    }
+    vg_core->godot_pool_real_array_new(&values);
+    vg_core->godot_pool_real_array_resize(&values, (godot_int)total);
+    write = vg_core->godot_pool_real_array_write(&values);
+    ok = vg_check(&c, verve_agent_sample_values(a, axes, n_axes, discrete, n_discrete, continuous, n_continuous,
+                                                vg_core->godot_pool_real_array_write_access_ptr(write),
+                                                (uint32_t)total));
+    vg_core->godot_pool_real_array_write_access_destroy(write);
+    if (ok) vg_core->godot_variant_new_pool_real_array(&out, &values);
+    else out = vg_variant_nil();
+    vg_core->godot_pool_real_array_destroy(&values);
+    return out;
+}
+
+VG_METHOD(has_agent) {
+    vg_call c;
+    VG_UNUSED;
+    return vg_variant_bool(vg_begin(&c, user_data, "has_agent", argc, argv, 0, 0) && c.self->handle != NULL);
+}
+
+VG_METHOD(close) {
+    vg_call c;
+    VG_UNUSED;
+    if (vg_begin(&c, user_data, "close", argc, argv, 0, 0)) vg_adopt(c.self, NULL);
+    return vg_variant_nil();
+}
+
+VG_METHOD(get_last_error) {
+    VG_UNUSED, (void)argc, (void)argv;
+    return vg_variant_string(user_data ? ((vg_agent*)user_data)->last_error : "");
+}
+
+void vg_set_learning(godot_object* object, void* method_data, void* user_data, godot_variant* value) {
+    vg_call c;
+    verve_agent* a;
+    int enabled = 0;
+    VG_UNUSED;
+    if (vg_begin(&c, user_data, "learning", 1, &value, 1, 1) && vg_agent_handle(&c, &a) &&
+        vg_arg_bool(&c, 0, "learning", &enabled))
+        vg_check(&c, verve_agent_set_learning(a, enabled));
+}
+
+godot_variant vg_get_learning(godot_object* object, void* method_data, void* user_data) {
+    vg_call c;
+    verve_agent* a;
+    int enabled = 0;
+    VG_UNUSED;
+    if (!vg_begin(&c, user_data, "learning", 0, NULL, 0, 0) || !vg_agent_handle(&c, &a) ||
+        !vg_check(&c, verve_agent_get_learning(a, &enabled)))
+        return vg_variant_nil();
+    return vg_variant_bool(enabled);
+}
