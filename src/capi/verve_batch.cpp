@@ -1,4 +1,6 @@
 // Many agents in one call: verve_batch over verve::Batch (its own pool or the host's job system).
+#include <algorithm>
+#include <atomic>
 #include <string>
 #include <vector>
 
@@ -10,6 +12,7 @@ struct verve_batch {
     verve::Batch batch;
     // Scratch reused from call to call: the agents behind the handles, the per-agent verdicts.
     std::vector<verve::Agent*> agents;
+    std::vector<verve_agent*> held;  // the handles whose in-use flag this call holds
     std::vector<int> results;
 };
 
@@ -82,8 +85,27 @@ VERVE_API verve_result VERVE_CALL verve_batch_update(verve_batch* batch, verve_a
         requireArg(out_actions, "out_actions");
         batch->agents.resize(n);
         batch->results.assign(n, 0);
-        // Through mutableAgent: an update drops the saves that verve_agent_save_memory keeps.
-        for (uint32_t i = 0; i < n; ++i) batch->agents[i] = agents[i] != nullptr ? &agents[i]->mutableAgent() : nullptr;
+        // Every agent's in-use flag is held for the whole call, as a single call holds it; an agent
+        // listed twice is taken once (looked up only when its flag is already held).
+        struct Release {
+            std::vector<verve_agent*>& held;
+            ~Release() {
+                for (verve_agent* h : held) h->inUse.store(false, std::memory_order_release);
+                held.clear();
+            }
+        } release{batch->held};
+        for (uint32_t i = 0; i < n; ++i) {
+            verve_agent* h = agents[i];
+            batch->agents[i] = nullptr;
+            if (h == nullptr) continue;  // refused below, naming the agent
+            if (verve::capi::tryAcquire(*h)) {
+                batch->held.push_back(h);
+            } else if (std::find(agents, agents + i, h) == agents + i) {
+                verve::capi::refuseInUse();
+            }
+            // Through mutableAgent: an update drops the saves that verve_agent_save_memory keeps.
+            batch->agents[i] = &h->mutableAgent();
+        }
         verve::BatchStep step;
         step.agents = batch->agents.data();
         step.count = n;

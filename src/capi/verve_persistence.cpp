@@ -6,7 +6,7 @@
 #include "capi/capi_buffer.hpp"
 #include "verve/io.hpp"
 
-using verve::capi::agentOf;
+using verve::capi::AgentUse;
 using verve::capi::guarded;
 using verve::capi::requireArg;
 
@@ -14,7 +14,8 @@ extern "C" {
 
 VERVE_API verve_result VERVE_CALL verve_agent_save(const verve_agent* agent, const char* path) {
     return guarded(__func__, [&] {
-        const verve::Agent& a = agentOf(agent);
+        const AgentUse use(agent);
+        const verve::Agent& a = use.agent();
         requireArg(path, "path");
         verve::saveAgent(a, path);
     });
@@ -30,7 +31,8 @@ VERVE_API verve_result VERVE_CALL verve_agent_load(const char* path, verve_agent
 
 VERVE_API verve_result VERVE_CALL verve_agent_save_memory(const verve_agent* agent, void* buffer, size_t* size) {
     return guarded(__func__, [&] {
-        const verve::Agent& a = agentOf(agent);
+        const AgentUse use(agent);
+        const verve::Agent& a = use.agent();
         requireArg(size, "size");
         // Serialised once for both calls: the size query keeps its bytes for the call with a buffer.
         const std::string* kept = agent->keptSave();
