@@ -194,6 +194,64 @@ static class MonoHost
             Expect<ObjectDisposedException>(() => s_agent.Update(0f, new[] { 0 }, new[] { 0f }, 0.1f));
             Expect<ObjectDisposedException>(() => { var unused = s_agent.Stats; });
         });
+
+        // One brain, two bodies, a batch over both on 2 threads: the same actions as updating them in order.
+        Check("Brain..ctor(AgentOptions); Brain.CreateBody(); Brain.get_RbfCount(); Batch..ctor(Int32); Batch.get_WorkerCount(); " +
+              "Batch.Update(Agent[], ReadOnlySpan<Single>, ReadOnlySpan<Int32>, ReadOnlySpan<Single>, Single, Span<Int32>, Span<ResultCode>); " +
+              "Batch.Dispose()", () =>
+        {
+            var options = new AgentOptions { Actions = 2, Seed = 3 }.AddContinuousSensor();
+            Brain solo = new Brain(options), crowd = new Brain(options);
+            Agent[] soloBodies = { solo.CreateBody(), solo.CreateBody() };
+            Agent[] bodies = { crowd.CreateBody(), crowd.CreateBody() };
+            var batch = new Batch(2);
+            Require(batch.WorkerCount == 2, "worker count");
+            var actions = new int[2];
+            var results = new ResultCode[2];
+            for (int step = 0; step < 50; step++)
+            {
+                float[] sensors = { (float)Math.Sin(step * 0.3), (float)Math.Cos(step * 0.2) };
+                float[] rewards = { step % 3 == 0 ? 1f : 0f, 0f };
+                int a0 = soloBodies[0].Update(rewards[0], null, new[] { sensors[0] }, 0.1f);
+                int a1 = soloBodies[1].Update(rewards[1], null, new[] { sensors[1] }, 0.1f);
+                batch.Update(bodies, rewards, new int[0], sensors, 0.1f, actions, results);
+                Require(actions[0] == a0 && actions[1] == a1, "the batch acted unlike updates in order");
+            }
+            Require(crowd.RbfCount == solo.RbfCount && crowd.RbfCount > 0, "RBF counts differ");
+            float[] nan = { float.NaN, 0f };
+            var e = Expect<VerveException>(() => batch.Update(bodies, new float[2], new int[0], nan, 0.1f, actions, results));
+            Require(e.Code == ResultCode.InvalidArgument && results[0] == ResultCode.InvalidArgument && results[1] == ResultCode.Ok,
+                "a bad input was not reported per agent");
+            batch.Dispose();
+            Expect<ObjectDisposedException>(() => { var unused = batch.WorkerCount; });
+            foreach (Agent a in soloBodies.Concat(bodies)) a.Dispose();
+            solo.Dispose();
+            crowd.Dispose();
+        });
+
+        Check("Brain.SaveToBytes(); Brain.LoadFromBytes(ReadOnlySpan<Byte>); Brain.Save(String); Brain.Load(String); " +
+              "Brain.Dispose(); Brain.get_IsDisposed()", () =>
+        {
+            var brain = new Brain(new AgentOptions { Actions = 2 }.AddContinuousSensor());
+            Agent body = brain.CreateBody();
+            for (int step = 0; step < 20; step++) body.Update(1f, null, new[] { 0.5f }, 0.1f);
+            byte[] bytes = brain.SaveToBytes();
+            Brain copy = Brain.LoadFromBytes(bytes);
+            Require(copy.RbfCount == brain.RbfCount, "a loaded brain has other RBFs");
+            string path = Path.Combine(Path.GetTempPath(), "verve-mono-brain-" + Guid.NewGuid().ToString("N") + ".xml");
+            brain.Save(path);
+            Brain fromFile = Brain.Load(path);
+            File.Delete(path);
+            Require(fromFile.RbfCount == brain.RbfCount, "a brain loaded from a file has other RBFs");
+            Require(!brain.IsDisposed, "disposed too early");
+            brain.Dispose();
+            Require(brain.IsDisposed, "IsDisposed after Dispose");
+            body.Update(0f, null, new[] { 0.5f }, 0.1f);  // the body keeps the brain alive
+            Expect<ObjectDisposedException>(() => brain.CreateBody());
+            body.Dispose();
+            copy.Dispose();
+            fromFile.Dispose();
+        });
     }
 
     const int StepsPerTrial = 20;
