@@ -62,14 +62,15 @@ static class MonoHost
               "AgentOptions.set_Planning(Boolean); AgentOptions.set_TauModel(Single); AgentOptions.set_MaxPlanningSteps(Int32); " +
               "AgentOptions.set_PlanningUncertaintyThreshold(Single); AgentOptions.set_Curiosity(Curiosity); " +
               "AgentOptions.set_CuriosityFactor(Single); AgentOptions.set_PlanningAccumulatesUncertainty(Boolean); " +
-              "AgentOptions.set_LearnFromRealSteps(Boolean); AgentOptions.set_DiscretePrediction(DiscretePrediction); " +
+              "AgentOptions.set_LearnFromRealSteps(Boolean); AgentOptions.set_DiscretePrediction(DiscretePrediction); AgentOptions.set_MaxRbfs(Int64); " +
               "Agent..ctor(AgentOptions); Agent.get_Options(); " +
               "AgentOptions.get_Actions(); AgentOptions.get_Resolution(); AgentOptions.get_RbfAllocation(); " +
               "AgentOptions.get_TauValue(); AgentOptions.get_TauDiscount(); AgentOptions.get_TauEligibility(); " +
               "AgentOptions.get_PolicyMultiplier(); AgentOptions.get_TraceThreshold(); AgentOptions.get_Seed(); " +
               "AgentOptions.get_Planning(); AgentOptions.get_TauModel(); AgentOptions.get_MaxPlanningSteps(); " +
               "AgentOptions.get_PlanningUncertaintyThreshold(); AgentOptions.get_Curiosity(); AgentOptions.get_CuriosityFactor(); " +
-              "AgentOptions.get_PlanningAccumulatesUncertainty(); AgentOptions.get_LearnFromRealSteps(); AgentOptions.get_DiscretePrediction()", () =>
+              "AgentOptions.get_PlanningAccumulatesUncertainty(); AgentOptions.get_LearnFromRealSteps(); AgentOptions.get_DiscretePrediction(); " +
+              "AgentOptions.get_MaxRbfs()", () =>
         {
             s_options = new AgentOptions
             {
@@ -77,7 +78,7 @@ static class MonoHost
                 TauEligibility = 0.15f, PolicyMultiplier = 4f, TraceThreshold = 0.02f, Seed = 7, Planning = true,
                 TauModel = 0.05f, MaxPlanningSteps = 4, PlanningUncertaintyThreshold = 0.4f, Curiosity = Curiosity.Novelty,
                 CuriosityFactor = 2f, PlanningAccumulatesUncertainty = false, LearnFromRealSteps = false,
-                DiscretePrediction = DiscretePrediction.Ordinal,
+                DiscretePrediction = DiscretePrediction.Ordinal, MaxRbfs = 5000,
             }.AddDiscreteSensor(2).AddContinuousSensor(true);
             s_agent = new Agent(s_options);
             AgentOptions back = s_agent.Options;
@@ -86,7 +87,7 @@ static class MonoHost
                     back.PolicyMultiplier == 4f && back.TraceThreshold == 0.02f && back.Seed == 7 && back.Planning &&
                     back.TauModel == 0.05f && back.MaxPlanningSteps == 4 && back.PlanningUncertaintyThreshold == 0.4f &&
                     back.Curiosity == Curiosity.Novelty && back.CuriosityFactor == 2f && !back.PlanningAccumulatesUncertainty &&
-                    !back.LearnFromRealSteps && back.DiscretePrediction == DiscretePrediction.Ordinal &&
+                    !back.LearnFromRealSteps && back.DiscretePrediction == DiscretePrediction.Ordinal && back.MaxRbfs == 5000 &&
                     back.DiscreteSensors.SequenceEqual(new[] { 2 }) && back.ContinuousSensorCircular.SequenceEqual(new[] { true }),
                     "Agent.Options differs from the options it was made with");
         });
@@ -102,12 +103,14 @@ static class MonoHost
 
         Check("Agent.get_Stats(); AgentStats.get_Steps(); AgentStats.get_RbfCount(); AgentStats.get_LiveTraces(); AgentStats.get_Value(); " +
               "AgentStats.get_TdError(); AgentStats.get_ModelError(); AgentStats.get_PredictedUncertainty(); " +
-              "AgentStats.get_PlanningSteps(); AgentStats.get_CuriosityReward(); AgentStats.ToString()", () =>
+              "AgentStats.get_PlanningSteps(); AgentStats.get_CuriosityReward(); AgentStats.get_RbfBudgetHits(); " +
+              "AgentStats.get_ClampedRewards(); AgentStats.ToString()", () =>
         {
             AgentStats s = s_agent.Stats;
             Require(s.Steps == 3 * StepsPerTrial && s.RbfCount == s_agent.RbfCount, "stats disagree with the run: " + s);
             Require(s.LiveTraces >= 0 && s.PlanningSteps >= 0 && !float.IsNaN(s.Value + s.TdError + s.ModelError +
                     s.PredictedUncertainty + s.CuriosityReward), "bad stats: " + s);
+            Require(s.RbfBudgetHits == 0 && s.ClampedRewards == 0, "rewards in [0, 1] under the budget were counted: " + s);
             Require(s.ToString().StartsWith("steps=" + s.Steps, StringComparison.Ordinal), "AgentStats.ToString: " + s);
         });
 
