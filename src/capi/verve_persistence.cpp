@@ -3,6 +3,7 @@
 #include <string>
 
 #include "capi/capi_agent.hpp"
+#include "capi/capi_buffer.hpp"
 #include "verve/io.hpp"
 
 using verve::capi::AgentUse;
@@ -39,15 +40,8 @@ VERVE_API verve_result VERVE_CALL verve_agent_save_memory(const verve_agent* age
             agent->keepSave(verve::saveAgentToString(a));
             kept = agent->keptSave();
         }
-        const size_t capacity = *size;
-        *size = kept->size();
-        if (buffer == nullptr) return;  // the size query
-        if (capacity < kept->size()) {
-            throw verve::Error(verve::ErrorCode::BufferTooSmall, "the buffer holds " + std::to_string(capacity) +
-                                                                     " bytes, the save needs " + std::to_string(kept->size()));
-        }
-        std::memcpy(buffer, kept->data(), kept->size());
-        agent->dropSave();  // delivered: free the copy
+        verve::capi::copyOut(*kept, buffer, *size);
+        if (buffer != nullptr) agent->dropSave();  // delivered: free the copy
     });
 }
 

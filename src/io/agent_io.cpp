@@ -19,9 +19,22 @@ auto naming(const std::string& context, F&& body) -> decltype(body()) {
     }
 }
 
-Agent agentFromXml(const char* data, std::size_t size) {
-    AgentSnapshot snapshot = io::snapshotFromXml(data, size);
-    return Agent(snapshot);  // the core checks what io cannot (e.g. the weight stride): Error(Format)
+// Agent or Brain: the core checks what io cannot (e.g. the weight stride): Error(Format).
+template <typename Learner>
+Learner fromXml(const char* data, std::size_t size) {
+    return Learner(io::snapshotFromXml(data, size));
+}
+
+template <typename Learner>
+Learner load(const std::string& path) {
+    return naming("load '" + path + "'", [&] {
+        const std::string data = io::readWholeFile(path);
+        return fromXml<Learner>(data.data(), data.size());
+    });
+}
+
+void save(const AgentSnapshot& snapshot, const std::string& path, bool includeTraces) {
+    naming("save '" + path + "'", [&] { io::writeFileAtomically(path, io::snapshotToXml(snapshot, includeTraces)); });
 }
 
 }  // namespace
@@ -31,20 +44,25 @@ std::string saveAgentToString(const Agent& agent, const SaveOptions& options) {
 }
 
 void saveAgent(const Agent& agent, const std::string& path, const SaveOptions& options) {
-    naming("save '" + path + "'", [&] {
-        io::writeFileAtomically(path, io::snapshotToXml(agent.snapshot(), options.includeTraces));
-    });
+    save(agent.snapshot(), path, options.includeTraces);
 }
 
-Agent loadAgent(const std::string& path) {
-    return naming("load '" + path + "'", [&] {
-        const std::string data = io::readWholeFile(path);
-        return agentFromXml(data.data(), data.size());
-    });
-}
+Agent loadAgent(const std::string& path) { return load<Agent>(path); }
 
 Agent loadAgentFromMemory(const char* data, std::size_t size) {
-    return naming("load from memory", [&] { return agentFromXml(data, size); });
+    return naming("load from memory", [&] { return fromXml<Agent>(data, size); });
+}
+
+std::string saveBrainToString(const Brain& brain) {
+    return naming("save", [&] { return io::snapshotToXml(brain.snapshot(), false); });
+}
+
+void saveBrain(const Brain& brain, const std::string& path) { save(brain.snapshot(), path, false); }
+
+Brain loadBrain(const std::string& path) { return load<Brain>(path); }
+
+Brain loadBrainFromMemory(const char* data, std::size_t size) {
+    return naming("load from memory", [&] { return fromXml<Brain>(data, size); });
 }
 
 }  // namespace verve
