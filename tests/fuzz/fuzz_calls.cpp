@@ -63,7 +63,7 @@ extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size) {
         const Visible before = visible(agent);
         verve_result r = VERVE_OK;
         bool changes = false;  // a successful call of this kind may change what visible() reports
-        switch (in.ConsumeIntegralInRange<int>(0, 11)) {
+        switch (in.ConsumeIntegralInRange<int>(0, 15)) {
             case 0:
             case 1:
             case 2: {
@@ -123,6 +123,35 @@ extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size) {
                 verve_agent_desc out;
                 out.struct_size = in.ConsumeBool() ? sizeof out : in.ConsumeIntegral<uint32_t>();
                 r = verve_agent_get_desc(agent, &out);
+                break;
+            }
+            case 12: {  // an update with an action mask: masked actions are never chosen
+                const verve_fuzz::Observation o = verve_fuzz::anyObservation(in, d);
+                uint8_t mask[64];
+                for (uint8_t& m : mask) m = in.ConsumeIntegralInRange<int>(0, 15) == 0 ? in.ConsumeIntegral<uint8_t>() : in.ConsumeIntegralInRange<uint8_t>(0, 1);
+                const uint32_t n = in.ConsumeBool() ? d.num_actions : in.ConsumeIntegralInRange<uint32_t>(0, 64);
+                uint32_t action = 0;
+                r = verve_agent_update_masked(agent, anyFloat(in, -1.5f, 1.5f), o.discrete, o.numDiscrete, o.continuous,
+                                              o.numContinuous, anyFloat(in, 0.001f, 1.0f), n <= 64 ? mask : nullptr, n, &action);
+                if (r == VERVE_OK) VERVE_FUZZ_CHECK(action < d.num_actions && action < 64 && mask[action] == 1);
+                changes = true;
+                break;
+            }
+            case 13:
+                r = verve_agent_truncate_episode(agent, anyFloat(in, -1.5f, 1.5f));
+                changes = true;
+                break;
+            case 14:
+                r = verve_agent_set_action_selection(agent, in.ConsumeIntegralInRange<uint32_t>(0, 2));
+                break;
+            case 15: {  // probabilities sum to 1 over the agent's actions
+                std::vector<float> p(in.ConsumeBool() ? d.num_actions : in.ConsumeIntegralInRange<uint32_t>(0, 16));
+                r = verve_agent_get_action_probabilities(agent, p.empty() ? nullptr : p.data(), static_cast<uint32_t>(p.size()));
+                if (r == VERVE_OK) {
+                    double sum = 0.0;
+                    for (float x : p) sum += x;
+                    VERVE_FUZZ_CHECK(sum > 0.99 && sum < 1.01);
+                }
                 break;
             }
             case 11: {

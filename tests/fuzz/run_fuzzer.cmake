@@ -2,6 +2,11 @@
 # Fails on any crash, sanitizer report, leak, out-of-memory (> 2 GB) or input slower than 1 s,
 # and leaves the reproducer in WORK/. Prints libFuzzer's closing statistics (executions, coverage).
 set(seconds $ENV{VERVE_FUZZ_SECONDS})
+# A fixed seed (1 unless VERVE_FUZZ_SEED says otherwise): CI's short runs try the same inputs each time.
+set(seed $ENV{VERVE_FUZZ_SEED})
+if(NOT seed)
+  set(seed 1)
+endif()
 if(NOT seconds)
   set(seconds 30)
 endif()
@@ -14,7 +19,7 @@ if(EXISTS ${SEEDS})
   endif()
 endif()
 execute_process(
-  COMMAND ${FUZZER} -max_total_time=${seconds} -timeout=1 -rss_limit_mb=2048 -print_final_stats=1
+  COMMAND ${FUZZER} -max_total_time=${seconds} -seed=${seed} -timeout=1 -rss_limit_mb=2048 -print_final_stats=1
     -artifact_prefix=${WORK}/ ${WORK}/corpus
   WORKING_DIRECTORY ${WORK}
   RESULT_VARIABLE result
