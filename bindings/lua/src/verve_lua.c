@@ -575,24 +575,34 @@ static int lv_sample_values(lua_State* L) {
     return 1;
 }
 
-static int lv_save(lua_State* L) {
+typedef verve_result (VERVE_CALL* lv_file_save)(const verve_agent*, const char*);
+typedef verve_result (VERVE_CALL* lv_memory_save)(const verve_agent*, void*, size_t*);
+
+static int lv_save_file(lua_State* L, lv_file_save save, const char* name) {
     verve_agent* a = lv_open_agent(L);
-    verve_result r = verve_agent_save(a, luaL_checkstring(L, 2));
-    if (r != VERVE_OK) return lv_fail(L, "save", r);
+    verve_result r = save(a, luaL_checkstring(L, 2));
+    if (r != VERVE_OK) return lv_fail(L, name, r);
     return 0;
 }
 
-static int lv_save_string(lua_State* L) {
+static int lv_save_memory(lua_State* L, lv_memory_save save, const char* name) {
     verve_agent* a = lv_open_agent(L);
     size_t size = 0;
     void* buffer;
-    verve_result r = verve_agent_save_memory(a, NULL, &size);
-    if (r != VERVE_OK && r != VERVE_ERROR_BUFFER_TOO_SMALL) return lv_fail(L, "save_string", r);
+    verve_result r = save(a, NULL, &size);
+    if (r != VERVE_OK && r != VERVE_ERROR_BUFFER_TOO_SMALL) return lv_fail(L, name, r);
     buffer = lua_newuserdata(L, size ? size : 1); /* collected by Lua, even if a later call errors */
-    r = verve_agent_save_memory(a, buffer, &size);
-    if (r != VERVE_OK) return lv_fail(L, "save_string", r);
+    r = save(a, buffer, &size);
+    if (r != VERVE_OK) return lv_fail(L, name, r);
     lua_pushlstring(L, (const char*)buffer, size);
     return 1;
+}
+
+static int lv_save(lua_State* L) { return lv_save_file(L, verve_agent_save, "save"); }
+static int lv_save_string(lua_State* L) { return lv_save_memory(L, verve_agent_save_memory, "save_string"); }
+static int lv_save_binary(lua_State* L) { return lv_save_file(L, verve_agent_save_binary, "save_binary"); }
+static int lv_save_binary_string(lua_State* L) {
+    return lv_save_memory(L, verve_agent_save_memory_binary, "save_binary_string");
 }
 
 /* close, __gc and __close: idempotent. */
@@ -633,6 +643,8 @@ static const luaL_Reg lv_agent_methods[] = {
     {"sample_values", lv_sample_values},
     {"save", lv_save},
     {"save_string", lv_save_string},
+    {"save_binary", lv_save_binary},
+    {"save_binary_string", lv_save_binary_string},
     {"close", lv_close},
     {NULL, NULL},
 };

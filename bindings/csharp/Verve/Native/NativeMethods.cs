@@ -84,5 +84,11 @@ namespace Verve.Native
 
         [DllImport(Library, CallingConvention = CallingConvention.Cdecl)]
         internal static extern ResultCode verve_agent_load_memory(byte* data, UIntPtr size, out IntPtr agent);
+
+        [DllImport(Library, CallingConvention = CallingConvention.Cdecl)]
+        internal static extern ResultCode verve_agent_save_binary(AgentHandle agent, byte* path);
+
+        [DllImport(Library, CallingConvention = CallingConvention.Cdecl)]
+        internal static extern ResultCode verve_agent_save_memory_binary(AgentHandle agent, byte* buffer, ref UIntPtr size);
     }
 }
