@@ -31,20 +31,14 @@ void operator delete(void* p, std::size_t) noexcept { std::free(p); }
 namespace verve {
 namespace {
 
-using iotest::drive;
+using iotest::expectSameFuture;
 using iotest::expectSameSnapshot;
-using iotest::Feed;
 using iotest::trainedAgent;
 
 const SaveOptions kBinary{true, SaveFormat::Binary};
 
 std::string binarySave(const Agent& agent) { return saveAgentToString(agent, kBinary); }
 
-void expectSameFuture(Agent& original, Agent& loaded) {
-    Feed a(99), b(99);
-    EXPECT_EQ(drive(original, a, 300), drive(loaded, b, 300));
-    expectSameSnapshot(original.snapshot(), loaded.snapshot());
-}
 
 // Loading must throw a Format error (or Version, when `versionToo`) with a message.
 void expectRefused(const std::string& data, const std::string& what, bool versionToo = false) {
@@ -59,20 +53,6 @@ void expectRefused(const std::string& data, const std::string& what, bool versio
     }
 }
 
-AgentDescriptor plannerDescriptor() {
-    AgentDescriptor d = iotest::mixedDescriptor();
-    d.allocation = RbfAllocation::Full;
-    d.resolution = 5;
-    d.planning = true;
-    d.curiosity = CuriosityMode::Progress;
-    d.curiosityFactor = 0.25f;
-    d.maxPlanningSteps = 50;
-    d.planningAccumulatesUncertainty = false;
-    d.learnFromRealSteps = false;
-    d.discretePrediction = DiscretePrediction::Ordinal;
-    return d;
-}
-
 TEST(BinarySave, RoundTripIsExactForEveryKindOfAgent) {
     AgentDescriptor discreteOnly;
     discreteOnly.addDiscreteSensor(20).addDiscreteSensor(2);
@@ -80,7 +60,7 @@ TEST(BinarySave, RoundTripIsExactForEveryKindOfAgent) {
     discreteOnly.seed = 0xFFFFFFFFFFFFFFFFULL;
     AgentDescriptor bandit;  // no sensors: one state
     bandit.numActions = 10;
-    for (const AgentDescriptor& d : {iotest::mixedDescriptor(), discreteOnly, bandit, plannerDescriptor()}) {
+    for (const AgentDescriptor& d : {iotest::mixedDescriptor(), discreteOnly, bandit, iotest::plannerDescriptor()}) {
         Agent agent = trainedAgent(d, 410);  // 410: stops mid-trial, with traces and a previous step
         const std::string bytes = binarySave(agent);
         Agent loaded = loadAgentFromMemory(bytes.data(), bytes.size());

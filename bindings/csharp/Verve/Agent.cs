@@ -181,8 +181,8 @@ namespace Verve
         /// survives a crash mid-save.</summary>
         public void Save(string path) => SaveFile(path, binary: false);
 
-        /// <summary>As <see cref="Save(string)"/>, in the compact binary format: about a third of the
-        /// size and several times faster to save and to load. <see cref="Load(string)"/> reads both.</summary>
+        /// <summary>As <see cref="Save(string)"/>, in the compact binary format: about half the size,
+        /// and faster to save and to load. <see cref="Load(string)"/> reads both.</summary>
         public void SaveBinary(string path) => SaveFile(path, binary: true);
 
         private unsafe void SaveFile(string path, bool binary)
