@@ -14,6 +14,7 @@
  *
  * Thread rules
  *  - One agent is used by one thread at a time. Different agents may be used concurrently.
+ *    Overlapping calls on one agent are detected and refused with VERVE_ERROR_INVALID_STATE.
  *  - verve_last_error() is per thread.
  *
  * Ownership
@@ -113,16 +114,21 @@ typedef struct verve_agent_desc {
     uint32_t planning_accumulates_uncertainty; /* 1 (default): a plan stops on its summed uncertainty */
     uint32_t learn_from_real_steps;        /* 1 (default, Dyna): real steps train too, not only plans */
     uint32_t discrete_prediction;          /* verve_discrete_prediction (default CATEGORICAL) */
+
+    /* V3. 64 bits wide so that it starts exactly where V2 ended (V2 had 4 bytes of tail padding). */
+    uint64_t max_rbfs; /* RBF budget (default 1000000; 0: unlimited, up to 2^32 - 2). At the budget the
+                          agent keeps working with the RBFs it has and counts rbf_budget_hits */
 } verve_agent_desc;
 
 /* The sizes of verve_agent_desc a library accepts in struct_size: each release's full struct.
- * V1 ended after `seed` (no planning fields); V2 is the current struct. Fields beyond a smaller
- * struct_size take their defaults. Any other size is refused. */
+ * V1 ended after `seed` (no planning fields); V2 after discrete_prediction; V3 is the current
+ * struct. Fields beyond a smaller struct_size take their defaults. Any other size is refused. */
 #define VERVE_AGENT_DESC_SIZE_V1 ((uint32_t)offsetof(verve_agent_desc, planning))
-#define VERVE_AGENT_DESC_SIZE_V2 ((uint32_t)sizeof(verve_agent_desc))
+#define VERVE_AGENT_DESC_SIZE_V2 ((uint32_t)offsetof(verve_agent_desc, max_rbfs))
+#define VERVE_AGENT_DESC_SIZE_V3 ((uint32_t)sizeof(verve_agent_desc))
 
 typedef struct verve_agent_stats {
-    uint32_t struct_size;           /* set by the caller to sizeof(verve_agent_stats) */
+    uint32_t struct_size;           /* VERVE_AGENT_STATS_SIZE_V1 or _V2 (sizeof): only that many bytes are written */
     uint64_t steps;                 /* real updates since creation */
     uint32_t rbf_count;
     uint32_t live_traces;
@@ -132,7 +138,13 @@ typedef struct verve_agent_stats {
     float predicted_uncertainty;
     uint32_t planning_steps;        /* imagined steps after the latest real step */
     float curiosity_reward;         /* summed over the latest plan */
+    /* V2 */
+    uint64_t rbf_budget_hits;       /* updates that would have made an RBF but max_rbfs was reached */
+    uint64_t clamped_rewards;       /* rewards outside [-1, 1] that were clamped */
 } verve_agent_stats;
+
+#define VERVE_AGENT_STATS_SIZE_V1 ((uint32_t)offsetof(verve_agent_stats, rbf_budget_hits))
+#define VERVE_AGENT_STATS_SIZE_V2 ((uint32_t)sizeof(verve_agent_stats))
 
 typedef struct verve_value_axis {
     uint32_t kind;    /* verve_sensor_kind */
@@ -140,10 +152,41 @@ typedef struct verve_value_axis {
     uint32_t samples; /* continuous: points from -1 to 1; discrete: the sensor's value count */
 } verve_value_axis;
 
+/* Host hooks: where Verve's memory comes from and where its warnings go (engines and consoles
+ * route both through their own systems). */
+typedef void* (VERVE_CALL *verve_malloc_fn)(void* user, size_t size);      /* NULL when out of memory */
+typedef void* (VERVE_CALL *verve_realloc_fn)(void* user, void* block, size_t size);
+typedef void (VERVE_CALL *verve_free_fn)(void* user, void* block);        /* block is never NULL */
+
+typedef enum verve_log_level {
+    VERVE_LOG_WARNING = 1 /* the call succeeded, but the host should know (clamped input, a budget reached) */
+} verve_log_level;
+typedef void (VERVE_CALL *verve_log_fn)(void* user, verve_log_level level, const char* message);
+
+typedef struct verve_hooks {
+    uint32_t struct_size;        /* sizeof(verve_hooks) */
+    /* All of Verve's memory: malloc_fn and free_fn both set, or both NULL (the C library's).
+     * Blocks must be aligned for any standard type (like malloc). realloc_fn may be NULL:
+     * this version never calls it. */
+    verve_malloc_fn malloc_fn;
+    verve_realloc_fn realloc_fn;
+    verve_free_fn free_fn;
+    void* alloc_user;            /* passed to the three functions */
+    verve_log_fn log_fn;         /* NULL: warnings are dropped */
+    void* log_user;
+} verve_hooks;
+
+#define VERVE_HOOKS_SIZE_V1 ((uint32_t)sizeof(verve_hooks))
+
 /* ---- library ---------------------------------------------------------------------------- */
 VERVE_API uint32_t VERVE_CALL verve_version(void); /* VERVE_VERSION_NUMBER of the loaded library */
 VERVE_API const char* VERVE_CALL verve_last_error(void); /* never NULL; "" after success */
 VERVE_API const char* VERVE_CALL verve_result_name(verve_result result);
+/* Installs the allocator and log hooks (NULL: back to the C library and no log). Only while Verve
+ * holds no memory (before the first agent, or after the last is destroyed), and not concurrently
+ * with other Verve calls: VERVE_ERROR_INVALID_STATE otherwise. The hooks may be called from any
+ * thread that calls Verve, concurrently when several agents are used at once. */
+VERVE_API verve_result VERVE_CALL verve_set_hooks(const verve_hooks* hooks);
 
 /* ---- agents ----------------------------------------------------------------------------- */
 VERVE_API void VERVE_CALL verve_agent_desc_default(verve_agent_desc* desc); /* NULL is ignored */

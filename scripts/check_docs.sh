@@ -87,6 +87,7 @@ in_doc docs/csharp.md 'bindings/csharp/test.sh build/src/capi'
 in_doc docs/csharp.md 'dotnet test bindings/csharp/Verve.Tests -p:VerveNativeDir=build/src/capi'
 in_doc docs/csharp.md 'dotnet run --project bindings/csharp/Verve.Sample -p:VerveNativeDir=build/src/capi -- 150 1'
 doc docs/csharp.md 'dotnet pack bindings/csharp/Verve -c Release -p:VerveNativeDir=build/src/capi -o out/nuget'
+in_doc docs/csharp.md 'dotnet pack bindings/csharp/Verve -c Release -p:VerveNativeDir=build/src/capi -p:VerveWindowsNativeDir=build/mingw/bin -o out/nuget'
 doc docs/csharp.md 'bindings/csharp/unity/make_package.sh out/unity build/src/capi'
 doc docs/csharp.md 'dotnet build bindings/csharp/Verve -c Release -p:VerveStaticLink=true -o out/verve-static'
 

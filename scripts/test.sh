@@ -37,4 +37,4 @@ if ! command -v dotnet >/dev/null 2>&1; then
   echo "Install the .NET SDK (https://learn.microsoft.com/dotnet/core/install/linux-debian) and rerun." >&2
   exit 1
 fi
-bindings/csharp/test.sh "$PWD/build/src/capi"
+bindings/csharp/test.sh "$PWD/build/src/capi" "$PWD/build/mingw/bin"  # both runtimes in the packages

@@ -52,9 +52,9 @@ dotnet pack Verve/Verve.csproj -c Release -p:VerveNativeDir="$native_dir" "${win
 nupkg=$(ls "$here"/bin/package/Verve.*.nupkg)
 nuget/check.sh "$nupkg" "$native_dir" $windows_dir
 
-echo "== the packed Verve.dll under Mono"
+echo "== the packed Verve.Net.dll under Mono"
 unzip -q "$nupkg" 'lib/*' 'runtimes/linux-x64/*' -d "$work/package"
-mono/run.sh "$work/package/lib/netstandard2.1/Verve.dll" "$work/package/runtimes/linux-x64/native"
+mono/run.sh "$work/package/lib/netstandard2.1/Verve.Net.dll" "$work/package/runtimes/linux-x64/native"
 
 echo "== Unity package"
 unity/make_package.sh "$work/unity" "$native_dir" $windows_dir >/dev/null

@@ -23,6 +23,8 @@ struct AgentStats {
     float predictedUncertainty = 0.0f;  // the model's own uncertainty at the latest step
     std::uint32_t planningSteps = 0;    // imagined steps after the latest real step
     float curiosityReward = 0.0f;       // curiosity reward summed over the latest plan
+    std::uint64_t rbfBudgetHits = 0;    // updates that would have added an RBF beyond maxRbfs
+    std::uint64_t clampedRewards = 0;   // rewards outside [-1, 1] that were clamped
 };
 
 enum class SensorKind : std::uint8_t { Discrete = 0, Continuous = 1 };

@@ -23,6 +23,25 @@ enum class DiscretePrediction : std::uint8_t {
     Ordinal = 1,      // the original's single scalar output, rounded to the nearest value
 };
 
+// Bounds on every size an agent derives from its descriptor, so that no descriptor or save can ask
+// for more memory or work per update than these allow (docs/c-api.md "Limits").
+struct DescriptorLimits {
+    static constexpr std::uint32_t kMaxActions = 4096;
+    static constexpr std::uint32_t kMaxSensors = 16;  // of each kind
+    static constexpr std::uint32_t kMaxResolution = 4096;
+    static constexpr std::uint64_t kMaxDiscreteValues = 1ull << 31;  // per sensor: readings are int32
+    static constexpr std::uint64_t kMaxDiscreteCombinations = 1ull << 53;
+    static constexpr std::uint64_t kMaxModelOutputs = 65536;    // per action, with planning
+    static constexpr std::uint64_t kMaxWeightsPerRbf = 1ull << 20;  // one RBF's row: 4 MiB of floats
+    static constexpr std::uint64_t kMaxFullLattice = 20000000;  // RBFs created up front (Full)
+    static constexpr std::uint32_t kMaxPlanningSteps = 100000;
+    static constexpr std::uint64_t kDefaultMaxRbfs = 1000000;
+    static constexpr std::uint64_t kMaxRbfs = 0xFFFFFFFEull;  // feature indices are 32-bit; also "unlimited"
+};
+
+// Which names validate() gives the fields in its messages: the C++ members or the C ABI's.
+enum class FieldNaming : std::uint8_t { Cpp, CAbi };
+
 struct ContinuousSensor {
     bool circular = false;  // the range wraps: -1 and 1 are the same point (angles)
 };
@@ -58,6 +77,12 @@ struct AgentDescriptor {
                                       // (the original learned only inside plans)
     DiscretePrediction discretePrediction = DiscretePrediction::Categorical;
 
+    // Memory budget: at most this many RBFs (0: unlimited, i.e. DescriptorLimits::kMaxRbfs). At the
+    // budget nothing more is allocated: an observation is represented by the existing RBFs within
+    // reach, and AgentStats::rbfBudgetHits counts the updates that would have added one.
+    std::uint64_t maxRbfs = DescriptorLimits::kDefaultMaxRbfs;
+    std::uint64_t rbfBudget() const { return maxRbfs == 0 ? DescriptorLimits::kMaxRbfs : maxRbfs; }
+
     AgentDescriptor& addDiscreteSensor(std::uint32_t numValues) {
         discreteSensors.push_back(numValues);
         return *this;
@@ -67,8 +92,9 @@ struct AgentDescriptor {
         return *this;
     }
 
-    // Throws verve::Error(InvalidArgument) naming the first bad field.
-    void validate() const;
+    // Throws verve::Error(InvalidArgument) naming the first bad field, or the fields whose derived
+    // size (lattice, model outputs, weights per RBF) exceeds DescriptorLimits.
+    void validate(FieldNaming naming = FieldNaming::Cpp) const;
 };
 
 }  // namespace verve

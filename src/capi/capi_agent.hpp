@@ -1,8 +1,10 @@
-// The opaque handle behind verve_agent*: a verve::Agent, and the save of the latest size query.
+// The opaque handle behind verve_agent*: a verve::Agent, the flag that detects two threads using
+// it at once, and the save of the latest size query.
 #pragma once
 #include <atomic>
 #include <cstdint>
 #include <string>
+#include <type_traits>
 #include <utility>
 
 #include "capi/capi_guard.hpp"
@@ -63,6 +65,10 @@ struct verve_agent {
         std::string().swap(save_);
     }
 
+    // Set for the duration of every call on this agent. Mutable: read-only calls take it too,
+    // because they share the agent's scratch memory (one atomic exchange per call).
+    mutable std::atomic<bool> inUse{false};
+
 private:
     verve::Agent agent_;
     // Mutable: a save is a const call (one agent is used by one thread at a time).
@@ -74,15 +80,33 @@ private:
 
 namespace verve::capi {
 
-inline Agent& agentOf(verve_agent* handle) {
-    requireArg(handle, "agent");
-    return handle->mutableAgent();
-}
+// Takes the in-use flag of a handle, or throws Error(InvalidState) when another call holds it.
+bool tryAcquire(const verve_agent& handle) noexcept;
+[[noreturn]] void refuseInUse();
 
-inline const Agent& agentOf(const verve_agent* handle) {
-    requireArg(handle, "agent");
-    return handle->agent();
-}
+// One call's exclusive use of an agent: a second thread arriving while it lasts is refused with
+// VERVE_ERROR_INVALID_STATE, never let in (docs/c-api.md "Failure model"). Handle is verve_agent or
+// const verve_agent; agent() is const for the read-only calls.
+template <typename Handle>
+class AgentUse {
+public:
+    explicit AgentUse(Handle* handle) : handle_(handle) {
+        requireArg(handle, "agent");
+        if (!tryAcquire(*handle)) refuseInUse();
+    }
+    ~AgentUse() { handle_->inUse.store(false, std::memory_order_release); }
+    AgentUse(const AgentUse&) = delete;
+    AgentUse& operator=(const AgentUse&) = delete;
+
+    // The agent, const for the read-only calls; a change goes through mutableAgent (save cache).
+    auto& agent() const {
+        if constexpr (std::is_const_v<Handle>) return handle_->agent();
+        else return handle_->mutableAgent();
+    }
+
+private:
+    Handle* handle_;
+};
 
 // Hands a new agent to the host: *out is written only once everything has succeeded.
 inline void handOut(Agent&& agent, verve_agent** out) { *out = new verve_agent(std::move(agent)); }

@@ -13,7 +13,8 @@ namespace {
 void requireKnownSize(std::uint32_t size) {
     if (!isKnownDescSize(size)) {
         refuse("struct_size " + std::to_string(size) + " is not a verve_agent_desc size this library knows (" +
-               std::to_string(VERVE_AGENT_DESC_SIZE_V1) + " or " + std::to_string(VERVE_AGENT_DESC_SIZE_V2) +
+               std::to_string(VERVE_AGENT_DESC_SIZE_V1) + ", " + std::to_string(VERVE_AGENT_DESC_SIZE_V2) + " or " +
+               std::to_string(VERVE_AGENT_DESC_SIZE_V3) +
                "); fill the struct with verve_agent_desc_init");
     }
 }
@@ -25,7 +26,7 @@ void requireFlag(std::uint32_t value, const std::string& name) {
 }  // namespace
 
 bool isKnownDescSize(std::uint32_t size) noexcept {
-    return size == VERVE_AGENT_DESC_SIZE_V1 || size == VERVE_AGENT_DESC_SIZE_V2;
+    return size == VERVE_AGENT_DESC_SIZE_V1 || size == VERVE_AGENT_DESC_SIZE_V2 || size == VERVE_AGENT_DESC_SIZE_V3;
 }
 
 // The full current struct for a descriptor: the one place the two layouts meet field by field.
@@ -57,6 +58,7 @@ static verve_agent_desc fullDesc(const AgentDescriptor& in) noexcept {
     d.planning_accumulates_uncertainty = in.planningAccumulatesUncertainty ? 1u : 0u;
     d.learn_from_real_steps = in.learnFromRealSteps ? 1u : 0u;
     d.discrete_prediction = static_cast<std::uint32_t>(in.discretePrediction);
+    d.max_rbfs = in.maxRbfs;
     return d;
 }
 
@@ -114,7 +116,8 @@ AgentDescriptor toDescriptor(const verve_agent_desc& in) {
     out.planningAccumulatesUncertainty = d.planning_accumulates_uncertainty != 0;
     out.learnFromRealSteps = d.learn_from_real_steps != 0;
     out.discretePrediction = static_cast<DiscretePrediction>(d.discrete_prediction);
-    out.validate();
+    out.maxRbfs = d.max_rbfs;
+    out.validate(FieldNaming::CAbi);
     return out;
 }
 

@@ -2,7 +2,7 @@
 #include "capi/capi_agent.hpp"
 #include "capi/capi_desc.hpp"
 
-using verve::capi::agentOf;
+using verve::capi::AgentUse;
 using verve::capi::guarded;
 using verve::capi::requireArg;
 
@@ -27,13 +27,22 @@ VERVE_API verve_result VERVE_CALL verve_agent_create(const verve_agent_desc* des
     });
 }
 
-VERVE_API void VERVE_CALL verve_agent_destroy(verve_agent* agent) { delete agent; }
+VERVE_API void VERVE_CALL verve_agent_destroy(verve_agent* agent) {
+    if (agent == nullptr) return;
+    // Freeing an agent another thread is inside would crash that thread: it stays alive instead.
+    if (!verve::capi::tryAcquire(*agent)) {
+        verve::capi::recordError(__func__, VERVE_ERROR_INVALID_STATE, "the agent is in use by another call: not destroyed");
+        return;
+    }
+    delete agent;
+}
 
 VERVE_API verve_result VERVE_CALL verve_agent_update(verve_agent* agent, float reward, const int32_t* discrete,
                                                      uint32_t n_discrete, const float* continuous,
                                                      uint32_t n_continuous, float dt, uint32_t* out_action) {
     return guarded(__func__, [&] {
-        verve::Agent& a = agentOf(agent);
+        const AgentUse use(agent);
+        verve::Agent& a = use.agent();
         requireArg(out_action, "out_action");
         if (n_discrete > 0) requireArg(discrete, "discrete (with n_discrete > 0)");
         if (n_continuous > 0) requireArg(continuous, "continuous (with n_continuous > 0)");
@@ -42,20 +51,30 @@ VERVE_API verve_result VERVE_CALL verve_agent_update(verve_agent* agent, float r
 }
 
 VERVE_API verve_result VERVE_CALL verve_agent_end_episode(verve_agent* agent, float final_reward) {
-    return guarded(__func__, [&] { agentOf(agent).endEpisode(final_reward); });
+    return guarded(__func__, [&] {
+        const AgentUse use(agent);
+        use.agent().endEpisode(final_reward);
+    });
 }
 
 VERVE_API verve_result VERVE_CALL verve_agent_reset_short_term_memory(verve_agent* agent) {
-    return guarded(__func__, [&] { agentOf(agent).resetShortTermMemory(); });
+    return guarded(__func__, [&] {
+        const AgentUse use(agent);
+        use.agent().resetShortTermMemory();
+    });
 }
 
 VERVE_API verve_result VERVE_CALL verve_agent_set_learning(verve_agent* agent, int enabled) {
-    return guarded(__func__, [&] { agentOf(agent).setLearning(enabled != 0); });
+    return guarded(__func__, [&] {
+        const AgentUse use(agent);
+        use.agent().setLearning(enabled != 0);
+    });
 }
 
 VERVE_API verve_result VERVE_CALL verve_agent_get_learning(const verve_agent* agent, int* out_enabled) {
     return guarded(__func__, [&] {
-        const verve::Agent& a = agentOf(agent);
+        const AgentUse use(agent);
+        const verve::Agent& a = use.agent();
         requireArg(out_enabled, "out_enabled");
         *out_enabled = a.learning() ? 1 : 0;
     });
@@ -63,7 +82,8 @@ VERVE_API verve_result VERVE_CALL verve_agent_get_learning(const verve_agent* ag
 
 VERVE_API verve_result VERVE_CALL verve_agent_get_desc(const verve_agent* agent, verve_agent_desc* out) {
     return guarded(__func__, [&] {
-        const verve::Agent& a = agentOf(agent);
+        const AgentUse use(agent);
+        const verve::Agent& a = use.agent();
         requireArg(out, "out");
         verve::capi::writeDesc(a.descriptor(), *out);
     });

@@ -6,7 +6,7 @@
 #include "capi/capi_agent.hpp"
 #include "verve/io.hpp"
 
-using verve::capi::agentOf;
+using verve::capi::AgentUse;
 using verve::capi::guarded;
 using verve::capi::requireArg;
 
@@ -19,14 +19,16 @@ verve::SaveOptions inFormat(verve::SaveFormat format) {
 }
 
 void saveToFile(const verve_agent* agent, const char* path, verve::SaveFormat format) {
-    const verve::Agent& a = agentOf(agent);
+    const AgentUse use(agent);
+    const verve::Agent& a = use.agent();
     requireArg(path, "path");
     verve::saveAgent(a, path, inFormat(format));
 }
 
 // The two-call buffer save of either format.
 void saveToMemory(const verve_agent* agent, void* buffer, size_t* size, verve::SaveFormat format) {
-    const verve::Agent& a = agentOf(agent);
+    const AgentUse use(agent);
+    const verve::Agent& a = use.agent();
     requireArg(size, "size");
     // Serialised once for both calls: the size query keeps its bytes for the call with a buffer.
     const std::string* kept = agent->keptSave(format);

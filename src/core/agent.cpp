@@ -4,6 +4,7 @@
 
 #include "core/agent_impl.hpp"
 #include "core/observation_check.hpp"
+#include "core/warnings.hpp"
 
 namespace verve {
 namespace {
@@ -34,6 +35,8 @@ Agent::Impl::Impl(const AgentDescriptor& d)
     weights.resize(rep.featureCount());
     previousDiscrete.assign(desc.discreteSensors.size(), 0);
     previousContinuous.assign(desc.continuousSensors.size(), 0.0f);
+    normalized.reserve(desc.continuousSensors.size());
+    activations.reserve(td.traceStride());  // chooseAction's scratch: one per trace component
     stats.rbfCount = rep.featureCount();
 }
 
@@ -79,6 +82,36 @@ void Agent::Impl::plan(const StepConstants& k) {
     stats.curiosityReward = result.curiosity;
 }
 
+void Agent::Impl::reserveFor(std::uint32_t features) {
+    rep.reserve(features);
+    weights.reserve(features);
+    core::reserveRoom(current, core::StateRepresentation::foundCapacity(features));
+    core::reserveRoom(previous, core::StateRepresentation::foundCapacity(features));
+    td.reserve(features);
+    if (desc.planning) planner.reserve(features);
+}
+
+float Agent::Impl::clampedReward(float reward) {
+    const float r = std::clamp(reward, -1.0f, 1.0f);
+    if (r != reward) {
+        ++stats.clampedRewards;
+        if (!std::exchange(reportedClamp, true)) {
+            core::warn("a reward of %g was clamped to [-1, 1] (rewards are expected in [-1, 1]; reported once per "
+                       "agent, counted in stats.clamped_rewards)", static_cast<double>(reward));
+        }
+    }
+    return r;
+}
+
+void Agent::Impl::noteBudgetReached() {
+    ++stats.rbfBudgetHits;
+    if (!std::exchange(reportedBudget, true)) {
+        core::warn("the RBF budget (max_rbfs = %llu) is reached: no more RBFs are made, observations use the "
+                   "existing ones within reach (reported once per agent, counted in stats.rbf_budget_hits)",
+                   static_cast<unsigned long long>(desc.rbfBudget()));
+    }
+}
+
 void Agent::Impl::resetShortTermMemory() {
     td.clear();
     hasPrevious = false;
@@ -99,13 +132,22 @@ std::uint32_t Agent::update(float reward, ObservationView obs, float dt) {
     core::checkObservation(s.desc, obs, s.normalized);
     core::checkFinite(reward, "reward");
     core::checkTimeStep(dt);
-    const float r = std::clamp(reward, -1.0f, 1.0f);
-    s.lastDt = dt;
 
-    const bool allocate = s.learning && s.desc.allocation == RbfAllocation::Dynamic;
-    if (s.rep.activate(obs.discrete, s.normalized.data(), allocate, s.current) > 0) {
+    // Everything that may allocate, before anything changes (strong guarantee): the lookup, then
+    // room for one more RBF everywhere, then the RBF itself (strong on its own).
+    const bool covered = s.rep.find(obs.discrete, s.normalized.data(), s.current);
+    bool grows = !covered && s.learning && s.desc.allocation == RbfAllocation::Dynamic;
+    const bool overBudget = grows && s.rep.featureCount() >= s.desc.rbfBudget();
+    grows = grows && !overBudget;
+    s.reserveFor(s.rep.featureCount() + (grows ? 1u : 0u));
+    if (grows) {
+        s.current.push_back(core::ActiveFeature{s.rep.add(obs.discrete, s.normalized.data()), 1.0f});
         s.weights.resize(s.rep.featureCount());
     }
+    // Nothing below allocates.
+    if (overBudget) s.noteBudgetReached();
+    const float r = s.clampedReward(reward);
+    s.lastDt = dt;
 
     const bool plans = s.learning && s.desc.planning;
     const StepConstants k = s.constantsFor(dt);
@@ -141,7 +183,7 @@ std::uint32_t Agent::update(float reward, ObservationView obs, float dt) {
 void Agent::endEpisode(float finalReward) {
     Impl& s = *impl_;
     core::checkFinite(finalReward, "final reward");
-    const float r = std::clamp(finalReward, -1.0f, 1.0f);
+    const float r = s.clampedReward(finalReward);
     if (s.learning && s.hasPrevious && s.desc.planning) s.learnModelTerminal(r);
     if (s.learning && s.hasPrevious && s.learnsFromRealSteps()) {
         // Terminal: nothing lies beyond, so no value is bootstrapped (delta = r - V(s)).

@@ -1,56 +1,140 @@
 #include <cmath>
 #include <string>
 
+#include "core/predictive_model.hpp"
 #include "verve/agent.hpp"
 
 namespace verve {
 namespace {
 
-void require(bool ok, const std::string& message) {
-    if (!ok) throw Error(ErrorCode::InvalidArgument, "invalid agent descriptor: " + message);
+using Limits = DescriptorLimits;
+
+// A field's name in the C++ API and in the C ABI (verve_agent_desc), for messages.
+struct Field {
+    const char* cpp;
+    const char* c;
+};
+constexpr Field kNumActions{"numActions", "num_actions"};
+constexpr Field kDiscreteSensors{"discreteSensors", "num_discrete_sensors"};
+constexpr Field kDiscreteValues{"discreteSensors", "discrete_sensor_values"};
+constexpr Field kContinuousSensors{"continuousSensors", "num_continuous_sensors"};
+constexpr Field kResolution{"resolution", "resolution"};
+constexpr Field kAllocation{"allocation", "rbf_allocation"};
+constexpr Field kTauValue{"tauValue", "tau_value"};
+constexpr Field kTauDiscount{"tauDiscount", "tau_discount"};
+constexpr Field kTauEligibility{"tauEligibility", "tau_eligibility"};
+constexpr Field kTauModel{"tauModel", "tau_model"};
+constexpr Field kPolicyMultiplier{"policyMultiplier", "policy_multiplier"};
+constexpr Field kTraceThreshold{"traceThreshold", "trace_threshold"};
+constexpr Field kMaxPlanningSteps{"maxPlanningSteps", "max_planning_steps"};
+constexpr Field kUncertaintyThreshold{"planningUncertaintyThreshold", "planning_uncertainty_threshold"};
+constexpr Field kCuriosity{"curiosity", "curiosity"};
+constexpr Field kCuriosityFactor{"curiosityFactor", "curiosity_factor"};
+constexpr Field kDiscretePrediction{"discretePrediction", "discrete_prediction"};
+constexpr Field kMaxRbfs{"maxRbfs", "max_rbfs"};
+
+class Validator {
+public:
+    explicit Validator(FieldNaming naming) : naming_(naming) {}
+
+    std::string name(Field f) const { return naming_ == FieldNaming::CAbi ? f.c : f.cpp; }
+    std::string name(Field f, std::size_t i) const { return name(f) + "[" + std::to_string(i) + "]"; }
+
+    void require(bool ok, const std::string& message) const {
+        if (!ok) throw Error(ErrorCode::InvalidArgument, "invalid agent descriptor: " + message);
+    }
+    void requireTimeConstant(float tau, Field f) const {
+        require(std::isfinite(tau) && tau >= 0.0f, name(f) + " must be a finite number >= 0");
+    }
+    void requireAtMost(std::uint64_t value, std::uint64_t limit, const std::string& what) const {
+        require(value <= limit, what + " is " + std::to_string(value) + ", at most " + std::to_string(limit));
+    }
+
+private:
+    FieldNaming naming_;
+};
+
+// The product of the value counts, saturating just above the limit (no overflow).
+std::uint64_t combinations(const AgentDescriptor& d) {
+    std::uint64_t n = 1;
+    for (auto c : d.discreteSensors) {
+        n *= c;
+        if (n > Limits::kMaxDiscreteCombinations) return Limits::kMaxDiscreteCombinations + 1;
+    }
+    return n;
 }
 
-void requireTimeConstant(float tau, const char* name) {
-    require(std::isfinite(tau) && tau >= 0.0f, std::string(name) + " must be a finite number >= 0");
+// resolution^numContinuous RBFs per discrete combination, times the combinations (saturating).
+std::uint64_t fullLatticeSize(const AgentDescriptor& d) {
+    std::uint64_t n = combinations(d);
+    for (std::size_t i = 0; i < d.continuousSensors.size() && n <= Limits::kMaxFullLattice; ++i) n *= d.resolution;
+    return n;
+}
+
+// Every size derived from several fields at once: each alone may be in range while their
+// product asks for gigabytes or overflows 32 bits.
+void validateDerivedSizes(const AgentDescriptor& d, const Validator& v) {
+    v.require(combinations(d) <= Limits::kMaxDiscreteCombinations,
+              "the product of " + v.name(kDiscreteValues) + " (discrete value combinations) is above 2^53");
+    if (d.allocation == RbfAllocation::Full) {
+        v.require(fullLatticeSize(d) <= Limits::kMaxFullLattice,
+                  "full " + v.name(kAllocation) + " would create " + v.name(kResolution) + "^" +
+                      v.name(kContinuousSensors) + " RBFs per discrete value combination, more than " +
+                      std::to_string(Limits::kMaxFullLattice) + " in all; use dynamic allocation");
+        v.require(fullLatticeSize(d) <= d.rbfBudget(),
+                  "full " + v.name(kAllocation) + " would create more RBFs than " + v.name(kMaxRbfs) + " allows");
+    }
+    if (!d.planning) return;
+    const std::uint64_t outputs = core::PredictiveModel::outputsPerAction(d);
+    v.require(outputs <= Limits::kMaxModelOutputs,
+              "planning predicts " + std::to_string(outputs) + " outputs per action (one per value of each of " +
+                  v.name(kDiscreteValues) + " with categorical " + v.name(kDiscretePrediction) + "), at most " +
+                  std::to_string(Limits::kMaxModelOutputs) + "; use fewer values or ordinal prediction");
+    const std::uint64_t perRbf = 1 + std::uint64_t(d.numActions) * (1 + outputs);
+    v.require(perRbf <= Limits::kMaxWeightsPerRbf,
+              "planning needs " + std::to_string(perRbf) + " weights per RBF (" + v.name(kNumActions) +
+                  " x model outputs), at most " + std::to_string(Limits::kMaxWeightsPerRbf) +
+                  "; use fewer actions or discrete values");
 }
 
 }  // namespace
 
-void AgentDescriptor::validate() const {
-    require(numActions >= 1, "numActions must be at least 1");
-    require(numActions <= 4096, "numActions must be at most 4096");
-    require(discreteSensors.size() <= 16, "at most 16 discrete sensors");
-    require(continuousSensors.size() <= 16, "at most 16 continuous sensors");
-    double combinations = 1.0;
+void AgentDescriptor::validate(FieldNaming naming) const {
+    const Validator v(naming);
+    v.require(numActions >= 1, v.name(kNumActions) + " must be at least 1");
+    v.requireAtMost(numActions, Limits::kMaxActions, v.name(kNumActions));
+    v.requireAtMost(discreteSensors.size(), Limits::kMaxSensors, v.name(kDiscreteSensors));
+    v.requireAtMost(continuousSensors.size(), Limits::kMaxSensors, v.name(kContinuousSensors));
     for (std::size_t i = 0; i < discreteSensors.size(); ++i) {
-        require(discreteSensors[i] >= 1,
-                "discrete sensor " + std::to_string(i) + " must have at least 1 value");
-        combinations *= discreteSensors[i];
+        v.require(discreteSensors[i] >= 1, v.name(kDiscreteValues, i) + " must be at least 1");
+        v.requireAtMost(discreteSensors[i], Limits::kMaxDiscreteValues, v.name(kDiscreteValues, i));
     }
-    require(combinations <= 9.0e15, "too many discrete value combinations (product of value counts)");
     if (!continuousSensors.empty()) {
-        require(resolution >= 1 && resolution <= 4096, "resolution must be in [1, 4096]");
+        v.require(resolution >= 1 && resolution <= Limits::kMaxResolution,
+                  v.name(kResolution) + " must be in [1, " + std::to_string(Limits::kMaxResolution) + "]");
     }
-    requireTimeConstant(tauValue, "tauValue");
-    requireTimeConstant(tauDiscount, "tauDiscount");
-    requireTimeConstant(tauEligibility, "tauEligibility");
-    requireTimeConstant(tauModel, "tauModel");
-    require(std::isfinite(policyMultiplier) && policyMultiplier >= 0.0f,
-            "policyMultiplier must be a finite number >= 0");
-    require(std::isfinite(traceThreshold) && traceThreshold > 0.0f && traceThreshold < 1.0f,
-            "traceThreshold must be in (0, 1)");
-    require(allocation == RbfAllocation::Dynamic || allocation == RbfAllocation::Full,
-            "allocation must be Dynamic or Full");
-    require(maxPlanningSteps <= 100000, "maxPlanningSteps must be at most 100000");
-    require(std::isfinite(planningUncertaintyThreshold) && planningUncertaintyThreshold >= 0.0f,
-            "planningUncertaintyThreshold must be a finite number >= 0");
-    require(curiosity == CuriosityMode::None || curiosity == CuriosityMode::Novelty ||
-                curiosity == CuriosityMode::Progress,
-            "curiosity must be None, Novelty or Progress");
-    require(discretePrediction == DiscretePrediction::Categorical || discretePrediction == DiscretePrediction::Ordinal,
-            "discretePrediction must be Categorical or Ordinal");
-    require(std::isfinite(curiosityFactor) && curiosityFactor >= 0.0f,
-            "curiosityFactor must be a finite number >= 0");
+    v.requireTimeConstant(tauValue, kTauValue);
+    v.requireTimeConstant(tauDiscount, kTauDiscount);
+    v.requireTimeConstant(tauEligibility, kTauEligibility);
+    v.requireTimeConstant(tauModel, kTauModel);
+    v.require(std::isfinite(policyMultiplier) && policyMultiplier >= 0.0f,
+              v.name(kPolicyMultiplier) + " must be a finite number >= 0");
+    v.require(std::isfinite(traceThreshold) && traceThreshold > 0.0f && traceThreshold < 1.0f,
+              v.name(kTraceThreshold) + " must be in (0, 1)");
+    v.require(allocation == RbfAllocation::Dynamic || allocation == RbfAllocation::Full,
+              v.name(kAllocation) + " must be Dynamic or Full");
+    v.requireAtMost(maxPlanningSteps, Limits::kMaxPlanningSteps, v.name(kMaxPlanningSteps));
+    v.require(std::isfinite(planningUncertaintyThreshold) && planningUncertaintyThreshold >= 0.0f,
+              v.name(kUncertaintyThreshold) + " must be a finite number >= 0");
+    v.require(curiosity == CuriosityMode::None || curiosity == CuriosityMode::Novelty ||
+                  curiosity == CuriosityMode::Progress,
+              v.name(kCuriosity) + " must be None, Novelty or Progress");
+    v.require(discretePrediction == DiscretePrediction::Categorical || discretePrediction == DiscretePrediction::Ordinal,
+              v.name(kDiscretePrediction) + " must be Categorical or Ordinal");
+    v.require(std::isfinite(curiosityFactor) && curiosityFactor >= 0.0f,
+              v.name(kCuriosityFactor) + " must be a finite number >= 0");
+    v.requireAtMost(maxRbfs, Limits::kMaxRbfs, v.name(kMaxRbfs));
+    validateDerivedSizes(*this, v);
 }
 
 }  // namespace verve

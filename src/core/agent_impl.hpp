@@ -33,6 +33,13 @@ struct Agent::Impl {
     void learnModelTerminal(float reward);
     void plan(const StepConstants& k);
     void recordModelError(float error);
+    // Room for everything an update with `features` RBFs may need (scratch, traces, weights).
+    // Called before anything changes: an allocation failure then leaves the agent as it was.
+    void reserveFor(std::uint32_t features);
+    // The observed reward within [-1, 1]; a clamp is counted and reported (once per agent).
+    float clampedReward(float reward);
+    // An update that needed an RBF the budget did not allow: counted and reported (once).
+    void noteBudgetReached();
     static constexpr float kModelErrorAveraging = 0.05f;  // stats.modelError: ~20-step running mean
     bool learnsFromRealSteps() const { return !desc.planning || desc.learnFromRealSteps; }
 
@@ -54,6 +61,8 @@ struct Agent::Impl {
     float lastDt = 0.1f;  // dt of the latest update: the duration of a terminal transition
 
     AgentStats stats;
+    bool reportedClamp = false;
+    bool reportedBudget = false;
 
     // Scratch reused on every update (no allocation once warmed up).
     std::vector<core::ActiveFeature> current;

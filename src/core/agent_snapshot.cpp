@@ -36,6 +36,7 @@ std::unique_ptr<Agent::Impl> restore(const AgentSnapshot& snap) {
     Agent::Impl& s = *impl;
 
     const std::size_t count = snap.featureKeys.size();
+    if (count > desc.rbfBudget()) corrupt("more RBFs (" + std::to_string(count) + ") than max_rbfs allows");
     const std::uint32_t nc = s.rep.numContinuous();
     requireSize(snap.centres.size(), count * nc, "RBF centres");
     requireFinite(snap.centres, "RBF centre");

@@ -9,6 +9,13 @@ namespace verve::core {
 Planner::Planner(const AgentDescriptor& desc) : td_(desc.numActions, desc.traceThreshold) {
     prediction_.discrete.resize(desc.discreteSensors.size());
     prediction_.continuous.resize(desc.continuousSensors.size());
+    activations_.reserve(std::size_t(desc.numActions) + 1);  // chooseAction's scratch: the trace stride
+}
+
+void Planner::reserve(std::uint32_t features) {
+    reserveRoom(phi_, StateRepresentation::foundCapacity(features));
+    reserveRoom(next_, StateRepresentation::foundCapacity(features));
+    td_.reserve(features);
 }
 
 PlanResult Planner::run(const PlanSettings& s, const std::vector<ActiveFeature>& start, WeightTable& w,

@@ -42,6 +42,9 @@ class Planner {
 public:
     explicit Planner(const AgentDescriptor& desc);
 
+    // Room for plans over `features` features: run() then allocates nothing.
+    void reserve(std::uint32_t features);
+
     PlanResult run(const PlanSettings& settings, const std::vector<ActiveFeature>& start, WeightTable& w,
                    const StateRepresentation& rep, const PredictiveModel& model, Rng& rng);
 

@@ -10,16 +10,13 @@ namespace {
 // one follows recent errors, the slow one remembers older ones; noise moves both alike.
 constexpr float kFastFraction = 0.5f;
 constexpr float kSlowFraction = 0.05f;
+constexpr std::uint32_t kScalarOutputs = 5;  // reward, terminal, certainty, fast, slow
 
-std::uint32_t discreteOutputsFor(const AgentDescriptor& desc) {
-    if (desc.discretePrediction == DiscretePrediction::Ordinal) return static_cast<std::uint32_t>(desc.discreteSensors.size());
-    std::uint32_t n = 0;
+std::uint64_t discreteOutputsFor(const AgentDescriptor& desc) {
+    if (desc.discretePrediction == DiscretePrediction::Ordinal) return desc.discreteSensors.size();
+    std::uint64_t n = 0;
     for (auto c : desc.discreteSensors) n += c;
     return n;
-}
-
-std::uint32_t blockSizeFor(const AgentDescriptor& desc) {
-    return static_cast<std::uint32_t>(desc.continuousSensors.size()) + discreteOutputsFor(desc) + 5;
 }
 
 float ordinalTarget(std::int32_t value, std::uint32_t count) {
@@ -33,11 +30,19 @@ float wrapDifference(float diff) {
     return diff;
 }
 
+// Into [-1, 1) in constant time whatever the magnitude: fmod (exact) first brings a large value
+// into (-2, 2), where subtracting 2 in a loop would never end for |v| >= 2^25 (v - 2 == v).
+// A non-finite output is no position at all: the centre.
 float wrapInto(float v) {
+    if (!std::isfinite(v)) return 0.0f;
+    if (std::fabs(v) >= 3.0f) v = std::fmod(v, 2.0f);
     while (v >= 1.0f) v -= 2.0f;
     while (v < -1.0f) v += 2.0f;
     return v;
 }
+
+// A raw output as a finite number: huge (but finite) weights can sum to infinity or NaN.
+float finite(float v) { return std::isfinite(v) ? v : 0.0f; }
 
 }  // namespace
 
@@ -49,21 +54,26 @@ PredictiveModel::PredictiveModel(const AgentDescriptor& desc)
       invSigma2_(0.25f * static_cast<float>(desc.resolution) * static_cast<float>(desc.resolution)),
       base_(WeightLayout::kPolicy + desc.numActions),
       numContinuous_(static_cast<std::uint32_t>(desc.continuousSensors.size())),
-      discreteOutputs_(discreteOutputsFor(desc)) {
+      discreteOutputs_(desc.planning ? static_cast<std::uint32_t>(discreteOutputsFor(desc)) : 0) {
     for (const auto& s : desc.continuousSensors) circular_.push_back(s.circular);
     reward_ = numContinuous_ + discreteOutputs_;
     terminal_ = reward_ + 1;
     certainty_ = reward_ + 2;
     fast_ = reward_ + 3;
     slow_ = reward_ + 4;
-    block_ = blockSizeFor(desc);
+    block_ = numContinuous_ + discreteOutputs_ + kScalarOutputs;
+    if (!desc.planning) return;  // no scratch: a model that never runs costs nothing per discrete value
     outputs_.assign(block_, 0.0f);
     targets_.assign(block_, 0.0f);
     trained_.assign(block_, 0);
 }
 
+std::uint64_t PredictiveModel::outputsPerAction(const AgentDescriptor& desc) {
+    return desc.continuousSensors.size() + discreteOutputsFor(desc) + kScalarOutputs;
+}
+
 std::uint32_t PredictiveModel::columnsFor(const AgentDescriptor& desc) {
-    return desc.planning ? desc.numActions * blockSizeFor(desc) : 0;
+    return desc.planning ? static_cast<std::uint32_t>(desc.numActions * outputsPerAction(desc)) : 0;
 }
 
 float PredictiveModel::rate(float dt) const {
@@ -87,7 +97,7 @@ void PredictiveModel::predict(const WeightTable& w, const std::vector<ActiveFeat
     out.continuous.resize(numContinuous_);
     for (std::uint32_t d = 0; d < numContinuous_; ++d) {
         const float v = outputs_[d];
-        out.continuous[d] = circular_[d] ? wrapInto(v) : std::clamp(v, -1.0f, 1.0f);
+        out.continuous[d] = circular_[d] ? wrapInto(v) : std::clamp(finite(v), -1.0f, 1.0f);
     }
     out.discrete.resize(discreteCounts_.size());
     std::uint32_t column = numContinuous_;
@@ -101,7 +111,7 @@ void PredictiveModel::predict(const WeightTable& w, const std::vector<ActiveFeat
             out.discrete[i] = static_cast<std::int32_t>(best);
             column += count;
         } else {
-            const float scaled = (std::clamp(outputs_[column], -1.0f, 1.0f) + 1.0f) * 0.5f * static_cast<float>(count - 1);
+            const float scaled = (std::clamp(finite(outputs_[column]), -1.0f, 1.0f) + 1.0f) * 0.5f * static_cast<float>(count - 1);
             out.discrete[i] = static_cast<std::int32_t>(std::lround(scaled));
             column += 1;
         }

@@ -33,7 +33,9 @@ class PredictiveModel {
 public:
     explicit PredictiveModel(const AgentDescriptor& desc);
 
-    // Weight columns the model needs per feature (0 when planning is off).
+    // Outputs per action block, in 64 bits: validation bounds it before anything is allocated.
+    static std::uint64_t outputsPerAction(const AgentDescriptor& desc);
+    // Weight columns the model needs per feature (0 when planning is off); desc is validated.
     static std::uint32_t columnsFor(const AgentDescriptor& desc);
 
     // Delta-rule rate eta_pred = (1 - e^(-dt/tau_pred)) / sum (tau 0: 1 / sum).

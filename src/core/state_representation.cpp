@@ -9,7 +9,6 @@ namespace verve::core {
 namespace {
 
 constexpr float kCutoffWidths = 4.0f;            // activations beyond 4 sigma count as zero
-constexpr std::uint64_t kMaxFullFeatures = 20000000;  // refuse absurd full lattices
 
 std::uint64_t mix(std::uint64_t h, std::uint64_t v) {
     h ^= v + 0x9e3779b97f4a7c15ULL + (h << 6) + (h >> 2);
@@ -64,14 +63,29 @@ std::uint64_t StateRepresentation::cellHash(const std::int32_t* coords) const {
 }
 
 std::uint32_t StateRepresentation::addFeature(std::uint64_t key, const float* centre) {
-    const std::uint32_t index = featureCount_++;
+    // Everything that allocates comes first; from the first change that stays on, nothing can fail.
     cellCoords(centre, coords_.data());
-    Cell& cell = arrays_[key].cells[cellHash(coords_.data())];
+    const std::uint64_t hash = cellHash(coords_.data());
+    Array& array = arrays_[key];
+    Cell* added = nullptr;
+    try {
+        added = &array.cells[hash];
+        reserveRoom(added->features, added->features.size() + 1);
+        reserveRoom(added->centres, added->centres.size() + std::size_t(numContinuous_) * kScanLanes);
+        if (added->bounds.empty()) added->bounds.assign(std::size_t(numContinuous_) * 2, 0.0f);
+    } catch (...) {
+        // Undo the empty entries just made (a cell or array that existed before is never empty).
+        auto c = array.cells.find(hash);
+        if (c != array.cells.end() && c->second.features.empty()) array.cells.erase(c);
+        if (array.cells.empty()) arrays_.erase(key);
+        throw;
+    }
+    Cell& cell = *added;
+    const std::uint32_t index = featureCount_++;
     const std::size_t lane = cell.features.size() % kScanLanes;
     if (lane == 0) cell.centres.resize(cell.centres.size() + std::size_t(numContinuous_) * kScanLanes, 0.0f);
     float* block = cell.centres.data() + cell.centres.size() - std::size_t(numContinuous_) * kScanLanes;
     for (std::uint32_t d = 0; d < numContinuous_; ++d) block[d * kScanLanes + lane] = centre[d];
-    if (cell.bounds.empty()) cell.bounds.assign(std::size_t(numContinuous_) * 2, 0.0f);
     for (std::uint32_t d = 0; d < numContinuous_; ++d) {
         const bool first = cell.features.empty();
         cell.bounds[2 * d] = first ? centre[d] : std::min(cell.bounds[2 * d], centre[d]);
@@ -100,12 +114,8 @@ void StateRepresentation::features(std::vector<std::uint64_t>& keys, std::vector
 }
 
 void StateRepresentation::allocateFullLattice() {
+    // AgentDescriptor::validate bounds the lattice (DescriptorLimits::kMaxFullLattice).
     const double perArray = std::pow(static_cast<double>(resolution_), numContinuous_);
-    if (perArray * static_cast<double>(keyCount_) > static_cast<double>(kMaxFullFeatures)) {
-        throw Error(ErrorCode::InvalidArgument,
-                    "invalid agent descriptor: full RBF allocation would create more than 20 million "
-                    "features; use dynamic allocation");
-    }
     // Lattice centres sit in the middle of resolution equal cells: -1 + (i + 0.5) * sigma.
     std::vector<std::uint32_t> index(numContinuous_, 0);
     std::vector<float> centre(numContinuous_);
@@ -130,6 +140,10 @@ void StateRepresentation::allocateFullLattice() {
             entry.second.centres.shrink_to_fit();
         }
     }
+}
+
+std::uint32_t StateRepresentation::add(const std::int32_t* discrete, const float* continuous) {
+    return addFeature(discreteKey(discrete), continuous);
 }
 
 std::uint32_t StateRepresentation::activate(const std::int32_t* discrete, const float* continuous,

@@ -12,6 +12,7 @@
 
 #include "core/active_feature.hpp"
 #include "core/kernels.hpp"
+#include "core/weight_table.hpp"
 #include "verve/agent_descriptor.hpp"
 
 namespace verve::core {
@@ -25,6 +26,13 @@ public:
     // Returns the number of features added (0 or 1).
     std::uint32_t activate(const std::int32_t* discrete, const float* continuous, bool allocate,
                            std::vector<ActiveFeature>& out);
+    // A new RBF centred on the observation; returns its index. Strong guarantee: if an
+    // allocation fails, it throws and the representation is as it was.
+    std::uint32_t add(const std::int32_t* discrete, const float* continuous);
+    // Room for lookups once there are `features` RBFs: find() then allocates nothing, given an
+    // output vector with foundCapacity(features) room (the scan writes whole lanes, then trims).
+    void reserve(std::uint32_t features) { reserveRoom(visited_, features); }
+    static std::size_t foundCapacity(std::uint32_t features) { return std::size_t(features) + kScanLanes; }
     // The same without allocating; returns whether some RBF lies within one width.
     bool find(const std::int32_t* discrete, const float* continuous, std::vector<ActiveFeature>& out) const;
 

@@ -6,7 +6,15 @@
 namespace verve::core {
 
 TdLearner::TdLearner(std::uint32_t numActions, float traceThreshold)
-    : numActions_(numActions), stride_(1 + numActions), threshold_(traceThreshold), kernels_(&kernels()) {}
+    : numActions_(numActions), stride_(1 + numActions), threshold_(traceThreshold), kernels_(&kernels()) {
+    step_.reserve(stride_);
+}
+
+void TdLearner::reserve(std::uint32_t features) {
+    reserveRoom(traces_, std::size_t(features) * stride_);
+    reserveRoom(live_, std::size_t(features) + 1);
+    reserveRoom(strong_, features);
+}
 
 float TdLearner::value(const WeightTable& w, const std::vector<ActiveFeature>& phi) const {
     float v = 0.0f;
@@ -73,7 +81,7 @@ void TdLearner::mark(const std::vector<ActiveFeature>& phi, std::uint32_t action
         strong_[n] = f;
         n += f.activation >= threshold_;
     }
-    reserveLive(n);
+    reserveLive(std::min<std::size_t>(n, featureCount - liveCount_));  // at most that many become live
     for (std::size_t i = 0; i < n; ++i) {
         const ActiveFeature& f = strong_[i];
         float* e = trace(f.index);

@@ -1,10 +1,19 @@
 // Learned parameters, one contiguous row per feature: [value, policy[A], model outputs...].
 // One active feature is one cache walk, whichever network reads it.
 #pragma once
+#include <algorithm>
+#include <cstddef>
 #include <cstdint>
 #include <vector>
 
 namespace verve::core {
+
+// Makes room for n elements ahead of a change, growing geometrically: an update reserves
+// everything it may need first, so an allocation failure throws before anything has changed.
+template <typename Vector>
+void reserveRoom(Vector& v, std::size_t n) {
+    if (v.capacity() < n) v.reserve(std::max(n, 2 * v.capacity()));
+}
 
 struct WeightLayout {
     std::uint32_t numActions = 0;
@@ -26,6 +35,7 @@ public:
 
     // New features start at zero: value 0 and equal action probabilities (thesis chapter 4).
     void resize(std::uint32_t rows) { data_.resize(std::size_t(rows) * layout_.stride(), 0.0f); }
+    void reserve(std::uint32_t rows) { reserveRoom(data_, std::size_t(rows) * layout_.stride()); }
 
     float* row(std::uint32_t feature) { return data_.data() + std::size_t(feature) * layout_.stride(); }
     const float* row(std::uint32_t feature) const { return data_.data() + std::size_t(feature) * layout_.stride(); }

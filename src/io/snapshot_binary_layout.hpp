@@ -31,6 +31,7 @@ void transferDescriptor(Io& io, Descriptor& d) {
     io.flag("planning_accumulates_uncertainty", d.planningAccumulatesUncertainty);
     io.flag("learn_from_real_steps", d.learnFromRealSteps);
     io.choice("discrete_prediction", d.discretePrediction, DiscretePrediction::Ordinal);
+    io.value("max_rbfs", d.maxRbfs);
     io.list("discrete_sensors", d.discreteSensors);
     io.items("continuous_sensors", d.continuousSensors, 1, [](Io& in, auto& sensor) { in.flag("circular", sensor.circular); });
 }

@@ -42,13 +42,13 @@ void requireUnique(const char* field, std::vector<std::uint32_t> values) {
 
 std::uint64_t discreteCombinations(const AgentDescriptor& d) {
     std::uint64_t n = 1;
-    for (auto c : d.discreteSensors) n *= c;  // bounded by validate() (<= 9e15)
+    for (auto c : d.discreteSensors) n *= c;  // bounded by validate() (<= 2^53)
     return n;
 }
 
 void checkDescriptor(const AgentDescriptor& d) {
     try {
-        d.validate();
+        d.validate(FieldNaming::CAbi);  // the names a host sees in its verve_agent_desc
     } catch (const Error& e) {
         fail(std::string("descriptor: ") + e.what());
     }
@@ -57,7 +57,10 @@ void checkDescriptor(const AgentDescriptor& d) {
 void checkFeatures(const AgentSnapshot& s) {
     const std::size_t features = s.featureKeys.size();
     const std::size_t nc = s.descriptor.continuousSensors.size();
-    if (features > UINT32_MAX) fail("too many features");
+    if (features > s.descriptor.rbfBudget()) {
+        fail("the save holds " + std::to_string(features) + " RBFs, more than its max_rbfs allows (" +
+             std::to_string(s.descriptor.rbfBudget()) + ")");
+    }
     const std::uint64_t combos = discreteCombinations(s.descriptor);
     for (std::size_t i = 0; i < features; ++i) {
         if (s.featureKeys[i] >= combos) {

@@ -7,6 +7,7 @@
 #include "io/number_text.hpp"
 #include "io/snapshot_check.hpp"
 #include "io/snapshot_xml.hpp"
+#include "io/xml_memory.hpp"
 #include "verve/error.hpp"
 
 namespace verve::io {
@@ -111,6 +112,8 @@ AgentDescriptor readDescriptor(pugi::xml_node root) {
     if (prediction == "categorical") d.discretePrediction = DiscretePrediction::Categorical;
     else if (prediction == "ordinal") d.discretePrediction = DiscretePrediction::Ordinal;
     else failAttribute(n, "discrete_prediction", prediction, "categorical or ordinal");
+    // Absent from saves made before the RBF budget: they get the default budget.
+    if (n.attribute("max_rbfs")) d.maxRbfs = readUint64(n, "max_rbfs");
     for (pugi::xml_node s : n.children("discrete_sensor")) d.discreteSensors.push_back(readUint32(s, "values"));
     for (pugi::xml_node s : n.children("continuous_sensor")) d.continuousSensors.push_back({readBool(s, "circular")});
     return d;
@@ -165,6 +168,7 @@ std::size_t lineOf(const char* data, std::size_t size, std::ptrdiff_t offset) {
 pugi::xml_node parseRoot(pugi::xml_document& doc, const char* data, std::size_t size) {
     if (size == 0) fail("the save is empty");
     const pugi::xml_parse_result parsed = doc.load_buffer(data, size, pugi::parse_default, pugi::encoding_utf8);
+    throwIfXmlRanOutOfMemory();  // not a corrupt save: std::bad_alloc, VERVE_ERROR_OUT_OF_MEMORY
     if (!parsed) {
         std::string message = std::string("not well-formed XML at line ") +
                                std::to_string(lineOf(data, size, parsed.offset)) + ": " + parsed.description();

@@ -7,6 +7,7 @@
 #include "io/number_text.hpp"
 #include "io/snapshot_check.hpp"
 #include "io/snapshot_xml.hpp"
+#include "io/xml_memory.hpp"
 #include "verve/error.hpp"
 
 namespace verve::io {
@@ -78,6 +79,7 @@ void writeDescriptor(pugi::xml_node root, const AgentDescriptor& d) {
     n.append_attribute("curiosity").set_value(curiosityName(d.curiosity));
     setNumber(n, "curiosity_factor", d.curiosityFactor);
     n.append_attribute("planning_accumulates_uncertainty").set_value(d.planningAccumulatesUncertainty);
+    setNumber(n, "max_rbfs", d.maxRbfs);
     n.append_attribute("learn_from_real_steps").set_value(d.learnFromRealSteps);
     n.append_attribute("discrete_prediction")
         .set_value(d.discretePrediction == DiscretePrediction::Ordinal ? "ordinal" : "categorical");
@@ -139,8 +141,11 @@ std::string snapshotToXml(const AgentSnapshot& snapshot, bool includeTraces) {
     writeState(root, snapshot);
     writeFeatures(root, snapshot);
     if (includeTraces) writeShortTermMemory(root, snapshot);
+    // pugixml reports a failed allocation while building only by returning empty nodes.
+    throwIfXmlRanOutOfMemory();
     StringWriter writer;
     doc.save(writer, "  ", pugi::format_indent, pugi::encoding_utf8);
+    throwIfXmlRanOutOfMemory();
     return std::move(writer.text);
 }
 

@@ -291,7 +291,7 @@ TEST(CApiDesc, AnOldSmallerStructIsAcceptedAndTheRestDefaulted) {
 
 TEST(CApiDesc, GarbageStructSizesAreRefused) {
     for (uint32_t size : {0u, 4u, VERVE_AGENT_DESC_SIZE_V1 - 8, VERVE_AGENT_DESC_SIZE_V1 + 4,
-                          VERVE_AGENT_DESC_SIZE_V2 + 8, 0xFFFFFFFFu}) {
+                          VERVE_AGENT_DESC_SIZE_V2 + 4, VERVE_AGENT_DESC_SIZE_V3 + 8, 0xFFFFFFFFu}) {
         verve_agent_desc d = smallDesc();
         d.struct_size = size;
         verve_agent* out = nullptr;
@@ -314,10 +314,10 @@ TEST(CApiDesc, BadFieldsAreRefusedWithTheirName) {
         {[](verve_agent_desc& d) { d.rbf_allocation = 5; }, "rbf_allocation"},
         {[](verve_agent_desc& d) { d.planning = 2; }, "planning"},
         {[](verve_agent_desc& d) { d.curiosity = 3; }, "curiosity"},
-        {[](verve_agent_desc& d) { d.num_actions = 0; }, "numActions"},
-        {[](verve_agent_desc& d) { d.discrete_sensor_values[0] = 0; }, "discrete sensor 0"},
-        {[](verve_agent_desc& d) { d.tau_value = kNaN; }, "tauValue"},
-        {[](verve_agent_desc& d) { d.trace_threshold = 0.0f; }, "traceThreshold"},
+        {[](verve_agent_desc& d) { d.num_actions = 0; }, "num_actions"},
+        {[](verve_agent_desc& d) { d.discrete_sensor_values[0] = 0; }, "discrete_sensor_values[0]"},
+        {[](verve_agent_desc& d) { d.tau_value = kNaN; }, "tau_value"},
+        {[](verve_agent_desc& d) { d.trace_threshold = 0.0f; }, "trace_threshold"},
     };
     for (const Case& c : cases) {
         verve_agent_desc d = smallDesc();

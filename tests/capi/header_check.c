@@ -4,6 +4,9 @@
 
 /* The historical struct sizes are compile-time constants, the old one a strict prefix. */
 typedef char verve_desc_v1_is_a_prefix[(VERVE_AGENT_DESC_SIZE_V1 < VERVE_AGENT_DESC_SIZE_V2) ? 1 : -1];
+/* V2 ends where the V2 struct ended, tail padding included: hosts built then pass that sizeof. */
+typedef char verve_desc_v2_is_the_old_struct[
+    (VERVE_AGENT_DESC_SIZE_V2 == offsetof(verve_agent_desc, discrete_prediction) + 2 * sizeof(uint32_t)) ? 1 : -1];
 typedef char verve_desc_v1_ends_after_seed[
     (VERVE_AGENT_DESC_SIZE_V1 == offsetof(verve_agent_desc, seed) + sizeof(uint64_t)) ? 1 : -1];
 

@@ -164,10 +164,10 @@ TEST_F(CorruptBinarySave, ChecksumMismatchIsNamed) {
 }
 
 // The payload of the mixed agent (1 discrete, 2 continuous sensors): the descriptor's fixed part
-// is 58 bytes, then the discrete sensors' count and values, the continuous sensors' count and
+// is 66 bytes, then the discrete sensors' count and values, the continuous sensors' count and
 // flags, then the state's 49 bytes, then the feature keys' count.
-constexpr std::size_t kDiscreteCountAt = 58;
-constexpr std::size_t kFeatureCountAt = 58 + 8 + 4 + 8 + 2 + 49;
+constexpr std::size_t kDiscreteCountAt = 66;
+constexpr std::size_t kFeatureCountAt = 66 + 8 + 4 + 8 + 2 + 49;
 
 TEST_F(CorruptBinarySave, HugeCountsAreRefusedWithoutAllocating) {
     ASSERT_EQ(countAt(kDiscreteCountAt), 1u);  // the layout this test edits

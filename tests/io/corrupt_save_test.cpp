@@ -127,7 +127,7 @@ TEST_F(CorruptSave, BadAttributeValuesAreNamed) {
     expectRefused(edited([](pugi::xml_node r) { r.child("descriptor").attribute("allocation").set_value("lazy"); }),
                   ErrorCode::Format, "allocation");
     expectRefused(edited([](pugi::xml_node r) { r.child("descriptor").attribute("actions").set_value("0"); }),
-                  ErrorCode::Format, "numActions");
+                  ErrorCode::Format, "num_actions");
     expectRefused(edited([](pugi::xml_node r) { r.child("state").attribute("learning").set_value("yes"); }),
                   ErrorCode::Format, "learning");
     expectRefused(edited([](pugi::xml_node r) { r.child("state").attribute("rng").set_value("0 0 0 0"); }),

@@ -21,7 +21,7 @@ inline AgentDescriptor mixedDescriptor(std::uint64_t seed = 7) {
     return d;
 }
 
-// Full lattice, planning, progress curiosity and every non-default planning variant.
+// Full lattice, planning, progress curiosity, every non-default planning variant, an RBF budget.
 inline AgentDescriptor plannerDescriptor() {
     AgentDescriptor d = mixedDescriptor();
     d.allocation = RbfAllocation::Full;
@@ -33,6 +33,7 @@ inline AgentDescriptor plannerDescriptor() {
     d.planningAccumulatesUncertainty = false;
     d.learnFromRealSteps = false;
     d.discretePrediction = DiscretePrediction::Ordinal;
+    d.maxRbfs = 5000;
     return d;
 }
 
@@ -104,6 +105,7 @@ inline void expectSameDescriptor(const AgentDescriptor& a, const AgentDescriptor
     EXPECT_EQ(a.planningAccumulatesUncertainty, b.planningAccumulatesUncertainty);
     EXPECT_EQ(a.learnFromRealSteps, b.learnFromRealSteps);
     EXPECT_EQ(a.discretePrediction, b.discretePrediction);
+    EXPECT_EQ(a.maxRbfs, b.maxRbfs);
 }
 
 // Every field, floats compared bit for bit.

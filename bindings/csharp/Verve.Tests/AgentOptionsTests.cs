@@ -27,6 +27,7 @@ namespace Verve.Tests
             Assert.True(o.PlanningAccumulatesUncertainty);
             Assert.True(o.LearnFromRealSteps);
             Assert.Equal(DiscretePrediction.Categorical, o.DiscretePrediction);
+            Assert.Equal(1_000_000L, o.MaxRbfs);
             Assert.True(o.Actions > 0);
         }
 
@@ -39,7 +40,7 @@ namespace Verve.Tests
                 TauValue = 0.2f, TauDiscount = 1.5f, TauEligibility = 0.3f, PolicyMultiplier = 2.5f,
                 TraceThreshold = 0.02f, Seed = 0x1234_5678_9abc_def0UL, Planning = true, TauModel = 0.05f,
                 MaxPlanningSteps = 17, PlanningUncertaintyThreshold = 0.25f, Curiosity = Curiosity.Progress,
-                CuriosityFactor = 1.5f,
+                CuriosityFactor = 1.5f, MaxRbfs = 5000,
             }.AddDiscreteSensor(5).AddDiscreteSensor(2).AddContinuousSensor(circular: true).AddContinuousSensor();
 
             using var agent = new Agent(sent);
@@ -62,6 +63,7 @@ namespace Verve.Tests
             Assert.Equal(0.25f, got.PlanningUncertaintyThreshold);
             Assert.Equal(Curiosity.Progress, got.Curiosity);
             Assert.Equal(1.5f, got.CuriosityFactor);
+            Assert.Equal(5000L, got.MaxRbfs);
         }
 
         [Fact]

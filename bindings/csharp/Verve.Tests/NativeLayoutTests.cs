@@ -75,7 +75,7 @@ namespace Verve.Tests
 
         [Fact]
         public unsafe void BindingUsesTheCurrentDescriptorVersion() =>
-            Assert.Equal(Probe.Value["const VERVE_AGENT_DESC_SIZE_V2"], sizeof(verve_agent_desc));
+            Assert.Equal(Probe.Value["const VERVE_AGENT_DESC_SIZE_V3"], sizeof(verve_agent_desc));
 
         [Fact]
         public unsafe void DescriptorDefaultsAgreeBetweenDefaultAndInit()

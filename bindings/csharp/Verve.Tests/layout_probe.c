@@ -32,6 +32,7 @@ int main(void) {
     FIELD(verve_agent_desc, planning_accumulates_uncertainty);
     FIELD(verve_agent_desc, learn_from_real_steps);
     FIELD(verve_agent_desc, discrete_prediction);
+    FIELD(verve_agent_desc, max_rbfs);
 
     SIZE(verve_agent_stats);
     FIELD(verve_agent_stats, struct_size);
@@ -44,6 +45,8 @@ int main(void) {
     FIELD(verve_agent_stats, predicted_uncertainty);
     FIELD(verve_agent_stats, planning_steps);
     FIELD(verve_agent_stats, curiosity_reward);
+    FIELD(verve_agent_stats, rbf_budget_hits);
+    FIELD(verve_agent_stats, clamped_rewards);
 
     SIZE(verve_value_axis);
     FIELD(verve_value_axis, kind);
@@ -51,6 +54,7 @@ int main(void) {
     FIELD(verve_value_axis, samples);
 
     printf("const VERVE_AGENT_DESC_SIZE_V2 %u\n", (unsigned)VERVE_AGENT_DESC_SIZE_V2);
+    printf("const VERVE_AGENT_DESC_SIZE_V3 %u\n", (unsigned)VERVE_AGENT_DESC_SIZE_V3);
     printf("const VERVE_VERSION_NUMBER %d\n", VERVE_VERSION_NUMBER);
     printf("const VERVE_MAX_DISCRETE_SENSORS %d\n", VERVE_MAX_DISCRETE_SENSORS);
     printf("const VERVE_MAX_CONTINUOUS_SENSORS %d\n", VERVE_MAX_CONTINUOUS_SENSORS);

@@ -55,6 +55,7 @@ namespace Verve
             PlanningAccumulatesUncertainty = d.planning_accumulates_uncertainty != 0;
             LearnFromRealSteps = d.learn_from_real_steps != 0;
             DiscretePrediction = (DiscretePrediction)d.discrete_prediction;
+            MaxRbfs = (long)d.max_rbfs;
         }
 
         /// <summary>Value count of each discrete sensor, in observation order.</summary>
@@ -117,6 +118,10 @@ namespace Verve
         /// <summary>How the model predicts discrete sensors.</summary>
         public DiscretePrediction DiscretePrediction { get; set; }
 
+        /// <summary>RBF budget (<c>max_rbfs</c>, default 1,000,000; 0: unlimited). At the budget the agent
+        /// keeps working with the RBFs it has; <see cref="AgentStats.RbfBudgetHits"/> counts the misses.</summary>
+        public long MaxRbfs { get; set; }
+
         /// <summary>Adds a discrete sensor reading integers 0 .. <paramref name="values"/> - 1.</summary>
         public AgentOptions AddDiscreteSensor(int values)
         {
@@ -170,6 +175,7 @@ namespace Verve
             d.planning_accumulates_uncertainty = PlanningAccumulatesUncertainty ? 1u : 0u;
             d.learn_from_real_steps = LearnFromRealSteps ? 1u : 0u;
             d.discrete_prediction = (uint)DiscretePrediction;
+            d.max_rbfs = MaxRbfs < 0 ? ulong.MaxValue : (ulong)MaxRbfs; // negative: refused by the library
             return d;
         }
 

@@ -16,6 +16,8 @@ namespace Verve
             PredictedUncertainty = s.predicted_uncertainty;
             PlanningSteps = (int)s.planning_steps;
             CuriosityReward = s.curiosity_reward;
+            RbfBudgetHits = (long)s.rbf_budget_hits;
+            ClampedRewards = (long)s.clamped_rewards;
         }
 
         /// <summary>Real updates since creation.</summary>
@@ -36,6 +38,10 @@ namespace Verve
         public int PlanningSteps { get; }
         /// <summary>Curiosity reward summed over the latest plan.</summary>
         public float CuriosityReward { get; }
+        /// <summary>Updates that would have added an RBF beyond <see cref="AgentOptions.MaxRbfs"/>.</summary>
+        public long RbfBudgetHits { get; }
+        /// <summary>Rewards outside [-1, 1] that were clamped.</summary>
+        public long ClampedRewards { get; }
 
         /// <inheritdoc />
         public override string ToString() =>

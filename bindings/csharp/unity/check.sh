@@ -1,7 +1,7 @@
 #!/usr/bin/env bash
 # Checks a Unity package made by make_package.sh without Unity (none is installed here):
 #   bindings/csharp/unity/check.sh <package folder> <folder with libverve.so> [<folder with verve.dll>]
-# - the layout: package.json, README.md, Runtime/Verve.asmdef with every source of the binding,
+# - the layout: package.json, README.md, LICENSE.md, THIRD_PARTY_NOTICES.md, Runtime/Verve.asmdef with every source of the binding,
 #   the native library of each platform given (byte for byte, and no Windows one when none is given);
 # - package.json and the .asmdef are valid JSON with the right name, version and unsafe code allowed;
 # - every file and folder has a .meta, every .meta its file, all GUIDs distinct;
@@ -24,7 +24,11 @@ binding="$here/../Verve"
 fail() { echo "unity check: $*" >&2; exit 1; }
 
 # Layout.
-for f in package.json README.md Runtime/Verve.asmdef; do [[ -f $pkg/$f ]] || fail "no $f"; done
+for f in package.json Runtime/Verve.asmdef; do [[ -f $pkg/$f ]] || fail "no $f"; done
+repo="$here/../../.."
+for pair in docs/csharp.md:README.md LICENSE:LICENSE.md THIRD_PARTY_NOTICES.md:THIRD_PARTY_NOTICES.md; do
+    cmp -s "$repo/${pair%%:*}" "$pkg/${pair#*:}" || fail "${pair#*:} is missing or differs from the repository's ${pair%%:*}"
+done
 expected_sources=$(cd "$binding" && find . -name '*.cs' -not -path './obj/*' -not -path './bin/*' | sort)
 packaged_sources=$(cd "$pkg/Runtime" && find . -name '*.cs' | sort)
 [[ $expected_sources == "$packaged_sources" ]] || fail "Runtime/ does not hold exactly the binding's sources"
@@ -39,8 +43,8 @@ fi
 version=$(sed -n 's:.*<Version>\(.*\)</Version>.*:\1:p' "$binding/Verve.csproj")
 jq -e --arg v "$version" '.name == "com.verve.agent" and .version == $v and .unity == "2021.2" and .license == "MIT"' \
     "$pkg/package.json" >/dev/null || fail "package.json is not valid JSON or has the wrong name, version, unity or license"
-jq -e '.name == "Verve" and .allowUnsafeCode == true and .noEngineReferences == true' \
-    "$pkg/Runtime/Verve.asmdef" >/dev/null || fail "Runtime/Verve.asmdef is not valid JSON or lacks name Verve / allowUnsafeCode"
+jq -e '.name == "Verve.Net" and .allowUnsafeCode == true and .noEngineReferences == true' \
+    "$pkg/Runtime/Verve.asmdef" >/dev/null || fail "Runtime/Verve.asmdef is not valid JSON or lacks name Verve.Net / allowUnsafeCode"
 
 # .meta files: one per asset, distinct GUIDs.
 while read -r path; do
@@ -94,9 +98,9 @@ for variant in dynamic static; do
     [[ $variant == dynamic ]] || define=(-define:VERVE_STATIC_LINK)
     mkdir -p "$work/$variant"
     dotnet "$sdk/Roslyn/bincore/csc.dll" -nologo -noconfig -nostdlib -target:library -langversion:9 -unsafe \
-        -warnaserror "${define[@]}" -r:"$netstandard" -out:"$work/$variant/Verve.dll" "${sources[@]}" ||
+        -warnaserror "${define[@]}" -r:"$netstandard" -out:"$work/$variant/Verve.Net.dll" "${sources[@]}" ||
         fail "Runtime/ does not compile on its own (C# 9, netstandard2.1, $variant)"
-    mono_args=("$work/$variant/Verve.dll" "$pkg/Plugins/Linux/x86_64")
+    mono_args=("$work/$variant/Verve.Net.dll" "$pkg/Plugins/Linux/x86_64")
     [[ $variant == dynamic ]] || mono_args=(--static "${mono_args[@]}")
     mono_log=$("$here/../mono/run.sh" "${mono_args[@]}" 2>&1) ||
         { echo "$mono_log" >&2; fail "the assembly compiled from Runtime/ ($variant) fails under Mono"; }

@@ -3,7 +3,7 @@
 #   bindings/csharp/unity/make_package.sh <out-dir> <folder with libverve.so> [<folder with verve.dll>]
 # writes <out-dir>/com.verve.agent/ (for "Add package from disk") and
 # <out-dir>/com.verve.agent-<version>.tgz (for "Add package from tarball"):
-#   package.json, README.md (docs/csharp.md), LICENSE.md
+#   package.json, README.md (docs/csharp.md), LICENSE.md, THIRD_PARTY_NOTICES.md (what the libraries contain)
 #   Runtime/Verve.asmdef + the binding's sources (Unity compiles them; VERVE_STATIC_LINK can be defined)
 #   Plugins/Linux/x86_64/libverve.so    imported for the Linux editor and Linux x86_64 players
 #   Plugins/Windows/x86_64/verve.dll    imported for the Windows editor and Windows x86_64 players
@@ -40,7 +40,7 @@ cat >"$pkg/package.json" <<EOF
 EOF
 cat >"$pkg/Runtime/Verve.asmdef" <<'EOF'
 {
-  "name": "Verve",
+  "name": "Verve.Net",
   "rootNamespace": "Verve",
   "references": [],
   "includePlatforms": [],
@@ -55,7 +55,8 @@ cat >"$pkg/Runtime/Verve.asmdef" <<'EOF'
 }
 EOF
 cp "$repo/docs/csharp.md" "$pkg/README.md"
-[[ ! -f $repo/LICENSE ]] || cp "$repo/LICENSE" "$pkg/LICENSE.md"
+cp "$repo/LICENSE" "$pkg/LICENSE.md"
+cp "$repo/THIRD_PARTY_NOTICES.md" "$pkg/THIRD_PARTY_NOTICES.md"
 (cd "$binding" && find . -name '*.cs' -not -path './obj/*' -not -path './bin/*' -print0 |
     xargs -0 -I{} cp --parents {} "$pkg/Runtime/")
 cp "$2/libverve.so" "$pkg/Plugins/Linux/x86_64/libverve.so"

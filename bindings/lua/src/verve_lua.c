@@ -86,6 +86,9 @@ static lv_agent* lv_push_agent(lua_State* L) {
     return ud;
 }
 
+/* The native handle of the agent at index 1. Fetch it only after every Lua input is read and every
+ * Lua allocation is done, right before the C call: reading a table may run an __index metamethod,
+ * and allocating may run a finalizer, and either may close this very agent. */
 static verve_agent* lv_open_agent(lua_State* L) {
     lv_agent* ud = (lv_agent*)luaL_checkudata(L, 1, LV_AGENT_MT);
     if (!ud->handle) luaL_error(L, "verve: the agent is closed");
@@ -94,7 +97,7 @@ static verve_agent* lv_open_agent(lua_State* L) {
 
 /* ---- descriptor <-> table --------------------------------------------------------------- */
 
-typedef enum lv_kind { LV_UINT, LV_FLOAT, LV_SEED, LV_BOOL, LV_ENUM } lv_kind;
+typedef enum lv_kind { LV_UINT, LV_FLOAT, LV_UINT64, LV_BOOL, LV_ENUM } lv_kind;
 
 typedef struct lv_field {
     const char* name;
@@ -117,7 +120,7 @@ static const lv_field lv_fields[] = {
     LV_FIELD("tau_eligibility", tau_eligibility, LV_FLOAT, NULL),
     LV_FIELD("policy_multiplier", policy_multiplier, LV_FLOAT, NULL),
     LV_FIELD("trace_threshold", trace_threshold, LV_FLOAT, NULL),
-    LV_FIELD("seed", seed, LV_SEED, NULL),
+    LV_FIELD("seed", seed, LV_UINT64, NULL),
     LV_FIELD("planning", planning, LV_BOOL, NULL),
     LV_FIELD("tau_model", tau_model, LV_FLOAT, NULL),
     LV_FIELD("max_planning_steps", max_planning_steps, LV_UINT, NULL),
@@ -127,6 +130,7 @@ static const lv_field lv_fields[] = {
     LV_FIELD("planning_accumulates_uncertainty", planning_accumulates_uncertainty, LV_BOOL, NULL),
     LV_FIELD("learn_from_real_steps", learn_from_real_steps, LV_BOOL, NULL),
     LV_FIELD("discrete_prediction", discrete_prediction, LV_ENUM, lv_prediction_names),
+    LV_FIELD("max_rbfs", max_rbfs, LV_UINT64, NULL),
 };
 #define LV_FIELD_COUNT (sizeof lv_fields / sizeof lv_fields[0])
 
@@ -149,7 +153,7 @@ static void lv_read_field(lua_State* L, const lv_field* f, verve_agent_desc* d) 
         if (lua_type(L, -1) != LUA_TNUMBER) lv_desc_error(L, f->name, "a number");
         *(float*)p = lv_to_float(lua_tonumber(L, -1));
         break;
-    case LV_SEED:
+    case LV_UINT64:
         if (!lv_tointeger(L, -1, &v) || v < 0) lv_desc_error(L, f->name, "a non-negative integer");
         *(uint64_t*)p = (uint64_t)v;
         break;
@@ -189,7 +193,7 @@ static void lv_push_field(lua_State* L, const lv_field* f, const verve_agent_des
     case LV_FLOAT:
         lua_pushnumber(L, (lua_Number)*(const float*)p);
         break;
-    case LV_SEED:
+    case LV_UINT64:
         lua_pushinteger(L, (lua_Integer)*(const uint64_t*)p);
         break;
     case LV_BOOL:
@@ -383,22 +387,23 @@ static int lv_version(lua_State* L) {
 /* ---- agent methods ---------------------------------------------------------------------- */
 
 static int lv_update(lua_State* L) {
-    verve_agent* a = lv_open_agent(L);
-    float reward = lv_to_float(luaL_checknumber(L, 2));
-    float dt = lv_to_float(luaL_checknumber(L, 4));
+    float reward, dt;
     uint32_t action = 0;
     lv_obs o;
     verve_result r;
+    luaL_checkudata(L, 1, LV_AGENT_MT);
+    reward = lv_to_float(luaL_checknumber(L, 2));
+    dt = lv_to_float(luaL_checknumber(L, 4));
     lv_read_obs(L, 3, "update", &o);
-    r = verve_agent_update(a, reward, o.discrete, o.n_discrete, o.continuous, o.n_continuous, dt, &action);
+    r = verve_agent_update(lv_open_agent(L), reward, o.discrete, o.n_discrete, o.continuous, o.n_continuous, dt, &action);
     if (r != VERVE_OK) return lv_fail_indexed(L, "update", r);
     lua_pushinteger(L, (lua_Integer)action + 1);
     return 1;
 }
 
 static int lv_end_episode(lua_State* L) {
-    verve_agent* a = lv_open_agent(L);
-    verve_result r = verve_agent_end_episode(a, lv_to_float(luaL_checknumber(L, 2)));
+    float reward = lv_to_float(luaL_checknumber(L, 2));
+    verve_result r = verve_agent_end_episode(lv_open_agent(L), reward);
     if (r != VERVE_OK) return lv_fail(L, "end_episode", r);
     return 0;
 }
@@ -410,10 +415,9 @@ static int lv_reset_short_term_memory(lua_State* L) {
 }
 
 static int lv_set_learning(lua_State* L) {
-    verve_agent* a = lv_open_agent(L);
     verve_result r;
     luaL_checktype(L, 2, LUA_TBOOLEAN);
-    r = verve_agent_set_learning(a, lua_toboolean(L, 2));
+    r = verve_agent_set_learning(lv_open_agent(L), lua_toboolean(L, 2));
     if (r != VERVE_OK) return lv_fail(L, "set_learning", r);
     return 0;
 }
@@ -462,16 +466,15 @@ static int lv_rbf_count(lua_State* L) {
 
 /* agent:stats([t]) fills t (or a new table): pass the same table each frame to avoid garbage. */
 static int lv_stats(lua_State* L) {
-    verve_agent* a = lv_open_agent(L);
     verve_agent_stats s;
     verve_result r;
     memset(&s, 0, sizeof s);
     s.struct_size = (uint32_t)sizeof s;
     if (!lua_isnoneornil(L, 2)) luaL_checktype(L, 2, LUA_TTABLE);
-    r = verve_agent_get_stats(a, &s);
+    r = verve_agent_get_stats(lv_open_agent(L), &s);
     if (r != VERVE_OK) return lv_fail(L, "stats", r);
     if (lua_istable(L, 2)) lua_settop(L, 2);
-    else lua_createtable(L, 0, 9);
+    else lua_createtable(L, 0, 11);
     lua_pushinteger(L, (lua_Integer)s.steps);
     lua_setfield(L, -2, "steps");
     lua_pushinteger(L, (lua_Integer)s.rbf_count);
@@ -490,6 +493,10 @@ static int lv_stats(lua_State* L) {
     lua_setfield(L, -2, "planning_steps");
     lua_pushnumber(L, (lua_Number)s.curiosity_reward);
     lua_setfield(L, -2, "curiosity_reward");
+    lua_pushinteger(L, (lua_Integer)s.rbf_budget_hits);
+    lua_setfield(L, -2, "rbf_budget_hits");
+    lua_pushinteger(L, (lua_Integer)s.clamped_rewards);
+    lua_setfield(L, -2, "clamped_rewards");
     return 1;
 }
 
@@ -525,7 +532,6 @@ static void lv_read_axis(lua_State* L, const verve_agent_desc* d, verve_value_ax
  * (default: every discrete sensor at 1, every continuous at 0). One axis gives a list;
  * two give t[i][j], i along the first axis and j along the second. */
 static int lv_sample_values(lua_State* L) {
-    verve_agent* a = lv_open_agent(L);
     verve_agent_desc d;
     verve_value_axis axes[2];
     uint32_t n_axes, i, j, n0, n1;
@@ -534,7 +540,7 @@ static int lv_sample_values(lua_State* L) {
     float* out;
     verve_result r;
     verve_agent_desc_default(&d);
-    r = verve_agent_get_desc(a, &d);
+    r = verve_agent_get_desc(lv_open_agent(L), &d); /* the axes' defaults; the handle is fetched again below */
     if (r != VERVE_OK) return lv_fail(L, "sample_values", r);
     luaL_checktype(L, 2, LUA_TTABLE);
     n_axes = (uint32_t)lua_rawlen(L, 2);
@@ -556,7 +562,7 @@ static int lv_sample_values(lua_State* L) {
     total = (uint64_t)n0 * n1;
     if (total > LV_MAX_SAMPLES) luaL_error(L, "verve: sample_values: more than %d samples", (int)LV_MAX_SAMPLES);
     out = (float*)lua_newuserdata(L, (size_t)(total ? total : 1) * sizeof(float)); /* collected by Lua */
-    r = verve_agent_sample_values(a, axes, n_axes, base.discrete, base.n_discrete, base.continuous,
+    r = verve_agent_sample_values(lv_open_agent(L), axes, n_axes, base.discrete, base.n_discrete, base.continuous,
                                   base.n_continuous, out, (uint32_t)total);
     if (r != VERVE_OK) return lv_fail_indexed(L, "sample_values", r);
     lua_createtable(L, (int)n0, 0);
@@ -579,20 +585,19 @@ typedef verve_result (VERVE_CALL* lv_file_save)(const verve_agent*, const char*)
 typedef verve_result (VERVE_CALL* lv_memory_save)(const verve_agent*, void*, size_t*);
 
 static int lv_save_file(lua_State* L, lv_file_save save, const char* name) {
-    verve_agent* a = lv_open_agent(L);
-    verve_result r = save(a, luaL_checkstring(L, 2));
+    const char* path = luaL_checkstring(L, 2);
+    verve_result r = save(lv_open_agent(L), path);
     if (r != VERVE_OK) return lv_fail(L, name, r);
     return 0;
 }
 
 static int lv_save_memory(lua_State* L, lv_memory_save save, const char* name) {
-    verve_agent* a = lv_open_agent(L);
     size_t size = 0;
     void* buffer;
-    verve_result r = save(a, NULL, &size);
+    verve_result r = save(lv_open_agent(L), NULL, &size);
     if (r != VERVE_OK && r != VERVE_ERROR_BUFFER_TOO_SMALL) return lv_fail(L, name, r);
     buffer = lua_newuserdata(L, size ? size : 1); /* collected by Lua, even if a later call errors */
-    r = save(a, buffer, &size);
+    r = save(lv_open_agent(L), buffer, &size); /* a finalizer may have closed it */
     if (r != VERVE_OK) return lv_fail(L, name, r);
     lua_pushlstring(L, (const char*)buffer, size);
     return 1;

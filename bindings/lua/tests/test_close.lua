@@ -46,6 +46,24 @@ T.check("garbage collection frees unreferenced and closed agents", function()
   assert(next(weak) == nil, "agents were not collected")
 end)
 
+T.check("a table whose __index closes the agent: the call fails cleanly, the freed agent is never used", function()
+  -- Reading the observation or an axis runs the metamethod; the native handle must be fetched
+  -- after it, or the call would use freed memory.
+  local function closing(agent, fields)
+    return setmetatable({}, { __index = function(_, key) agent:close(); return fields[key] end })
+  end
+  local a1 = verve.agent(T.GRID)
+  T.expect_error("verve: the agent is closed", function() a1:update(0, closing(a1, { discrete = { 1, 1 } }), 0.1) end)
+  local a2 = verve.agent(T.GRID)
+  T.expect_error("verve: the agent is closed", function()
+    a2:sample_values({ closing(a2, { kind = "discrete", index = 1 }) })
+  end)
+  local a3 = verve.agent(T.GRID)
+  T.expect_error("verve: the agent is closed", function()
+    a3:sample_values({ { kind = "discrete", index = 1 } }, closing(a3, { discrete = { 1, 1 } }))
+  end)
+end)
+
 if T.lua54 then
   -- Compiled at run time: LuaJIT cannot parse the <close> attribute.
   local chunk = assert(load([[

@@ -20,7 +20,7 @@ T.check("every field survives the round trip through descriptor()", function()
     actions = 4, resolution = 16, allocation = "full", tau_value = 0.25, tau_discount = 2.5,
     tau_eligibility = 0.2, policy_multiplier = 7, trace_threshold = 0.05, seed = 123456789,
     planning = true, tau_model = 0.5, max_planning_steps = 20,
-    planning_uncertainty_threshold = 0.3, curiosity = "novelty", curiosity_factor = 2,
+    planning_uncertainty_threshold = 0.3, curiosity = "novelty", curiosity_factor = 2, max_rbfs = 200000,
   }
   local d = verve.agent(given):descriptor()
   for k, v in pairs(given) do

@@ -38,6 +38,7 @@ namespace Verve.Native
         public uint planning_accumulates_uncertainty;
         public uint learn_from_real_steps;
         public uint discrete_prediction;
+        public ulong max_rbfs; // V3
     }
 
     [StructLayout(LayoutKind.Sequential)]
@@ -53,6 +54,8 @@ namespace Verve.Native
         public float predicted_uncertainty;
         public uint planning_steps;
         public float curiosity_reward;
+        public ulong rbf_budget_hits; // V2
+        public ulong clamped_rewards;
     }
 
 #pragma warning restore IDE1006

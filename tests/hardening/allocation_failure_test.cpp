@@ -1,0 +1,129 @@
+// Allocation failure: a fixed scenario (create, 120 updates with RBF growth, planning and an
+// episode end, a save and a load) runs once for every N, with the N-th allocation failing. The
+// call that meets the failure must return VERVE_ERROR_OUT_OF_MEMORY and leave the agent exactly
+// as it was (its save byte-identical), and the scenario, retried from there, must end in the same
+// agent as a run without failures. Run under ASan by scripts/sanitize.sh.
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <functional>
+#include <string>
+#include <vector>
+
+#include "hardening_support.hpp"
+#include "memory_hooks.hpp"
+
+namespace verve::hardening {
+namespace {
+
+// The save of an agent, made with allocation failures off and not counted.
+std::string bytesOf(const verve_agent* agent, CountingAllocator& allocator) {
+    const long failAt = allocator.failAt.exchange(-1);
+    const long count = allocator.allocations.load();
+    std::string xml = saveToString(agent);
+    allocator.allocations = count;
+    allocator.failAt = failAt;
+    return xml;
+}
+
+class Scenario {
+public:
+    explicit Scenario(CountingAllocator& allocator) : allocator_(allocator) {}
+    ~Scenario() { verve_agent_destroy(agent_); }
+
+    int calls() const { return 124; }
+
+    // Call i of the scenario on the current agent.
+    verve_result call(int i) {
+        if (i == 0) return verve_agent_create(&desc_, &agent_);
+        if (i <= 120) {
+            if (i == 60) return verve_agent_end_episode(agent_, 1.0f);
+            const int32_t disc = i % 3;
+            const float c[2] = {std::sin(0.9f * static_cast<float>(i)), std::cos(0.4f * static_cast<float>(i))};
+            uint32_t action = 0;
+            return verve_agent_update(agent_, i % 9 == 0 ? 1.0f : -0.1f, &disc, 1, c, 2, 0.1f, &action);
+        }
+        if (i == 121) {  // the size query, then the save itself
+            size_ = 0;
+            return verve_agent_save_memory(agent_, nullptr, &size_);
+        }
+        if (i == 122) {
+            saved_.assign(size_, '\0');
+            return verve_agent_save_memory(agent_, &saved_[0], &size_);
+        }
+        verve_agent* loaded = nullptr;
+        const verve_result r = verve_agent_load_memory(saved_.data(), size_, &loaded);
+        if (r == VERVE_OK) {
+            verve_agent_destroy(agent_);
+            agent_ = loaded;
+        } else if (loaded != nullptr) {
+            return VERVE_ERROR_INTERNAL;  // a failed load must hand out nothing
+        }
+        return r;
+    }
+
+    const verve_agent* agent() const { return agent_; }
+
+private:
+    CountingAllocator& allocator_;
+    verve_agent_desc desc_ = mixedDesc(true, 11);
+    verve_agent* agent_ = nullptr;
+    size_t size_ = 0;
+    std::string saved_;
+};
+
+TEST(AllocationFailure, EveryFailedAllocationLeavesTheAgentAsItWas) {
+    CountingAllocator allocator;
+    const verve_hooks hooks = allocator.hooks();
+    ASSERT_EQ(verve_set_hooks(&hooks), VERVE_OK) << lastError();
+
+    // The reference run: every call succeeds. Allocations up to the end of each call, and the
+    // agent's save at the end.
+    std::string reference;
+    std::vector<long> upTo;
+    {
+        Scenario s(allocator);
+        for (int i = 0; i < s.calls(); ++i) {
+            ASSERT_EQ(s.call(i), VERVE_OK) << "call " << i << ": " << lastError();
+            upTo.push_back(allocator.allocations.load());
+        }
+        reference = bytesOf(s.agent(), allocator);
+    }
+    const long total = upTo.back();
+    ASSERT_GT(total, 500);
+    RecordProperty("allocations", static_cast<int>(total));
+
+    int failures = 0;
+    for (long n = 1; n <= total; ++n) {
+        allocator.allocations = 0;
+        allocator.failAt = n;
+        Scenario s(allocator);
+        bool failed = false;
+        for (int i = 0; i < s.calls(); ++i) {
+            // Deterministic: allocation n falls in the same call as in the reference run.
+            const bool hit = !failed && n <= upTo[static_cast<std::size_t>(i)];
+            const std::string before = hit && s.agent() != nullptr ? bytesOf(s.agent(), allocator) : std::string();
+            const verve_result r = s.call(i);
+            if (!hit) {
+                ASSERT_EQ(r, VERVE_OK) << "N=" << n << " call " << i << ": " << lastError();
+                continue;
+            }
+            ASSERT_EQ(r, VERVE_ERROR_OUT_OF_MEMORY) << "N=" << n << " call " << i << ": " << lastError();
+            ASSERT_NE(lastError().find("out of memory"), std::string::npos) << lastError();
+            if (s.agent() != nullptr) {
+                ASSERT_EQ(bytesOf(s.agent(), allocator), before) << "N=" << n << " call " << i << " changed the agent";
+            }
+            failed = true;
+            ++failures;
+            allocator.failAt = -1;
+            ASSERT_EQ(s.call(i), VERVE_OK) << "N=" << n << " retrying call " << i << ": " << lastError();
+        }
+        ASSERT_TRUE(failed) << "allocation " << n << " never happened";
+        ASSERT_EQ(bytesOf(s.agent(), allocator), reference) << "N=" << n << ": the retried scenario ends elsewhere";
+    }
+    EXPECT_EQ(failures, total);
+    ASSERT_EQ(verve_set_hooks(nullptr), VERVE_OK) << lastError();
+}
+
+}  // namespace
+}  // namespace verve::hardening
