@@ -15,11 +15,15 @@
  * Thread rules
  *  - One agent is used by one thread at a time. Different agents may be used concurrently.
  *    Overlapping calls on one agent are detected and refused with VERVE_ERROR_INVALID_STATE.
+ *  - A shared brain and all its bodies count as one agent. verve_batch_update spreads many
+ *    agents over threads for you, one brain's bodies in their order on one worker.
  *  - verve_last_error() is per thread.
  *
  * Ownership
  *  - verve_agent_create / verve_agent_load / verve_agent_load_memory hand you an agent; free it
  *    with verve_agent_destroy. Buffers you pass are only read (or written) during the call.
+ *  - A body (verve_brain_create_body) is an agent: free it with verve_agent_destroy. It keeps its
+ *    brain alive, so brains and bodies may be destroyed in any order.
  */
 #ifndef VERVE_C_H
 #define VERVE_C_H
@@ -86,6 +90,8 @@ typedef enum verve_sensor_kind {
 #define VERVE_MAX_CONTINUOUS_SENSORS 16
 
 typedef struct verve_agent verve_agent; /* opaque */
+typedef struct verve_brain verve_brain; /* opaque: a learner shared by many bodies (agents) */
+typedef struct verve_batch verve_batch; /* opaque: updates many agents in one call */
 
 typedef struct verve_agent_desc {
     uint32_t struct_size; /* sizeof(verve_agent_desc), set by verve_agent_desc_default */
@@ -236,6 +242,59 @@ VERVE_API verve_result VERVE_CALL verve_agent_load_memory(const void* data, size
  * than XML to save and to load). */
 VERVE_API verve_result VERVE_CALL verve_agent_save_binary(const verve_agent* agent, const char* path);
 VERVE_API verve_result VERVE_CALL verve_agent_save_memory_binary(const verve_agent* agent, void* buffer, size_t* size);
+
+/* ---- one brain, many bodies ------------------------------------------------------------ */
+/* A brain holds RBFs, weights and model; each body is a verve_agent with its own short-term
+ * memory (traces, previous step, random stream) that learns into the brain's shared weights.
+ * Every verve_agent_* call works on a body; saving a body saves the brain plus its memory. */
+VERVE_API verve_result VERVE_CALL verve_brain_create(const verve_agent_desc* desc, verve_brain** out);
+VERVE_API void VERVE_CALL verve_brain_destroy(verve_brain* brain); /* NULL is ignored */
+/* Body k of a brain (k counts the bodies it made) draws from a random stream of (seed, k). */
+VERVE_API verve_result VERVE_CALL verve_brain_create_body(verve_brain* brain, verve_agent** out_body);
+VERVE_API verve_result VERVE_CALL verve_brain_get_rbf_count(const verve_brain* brain, uint32_t* out_count);
+/* Saves are agent saves without short-term memory: a brain save loads as an agent and an agent
+ * save loads as a brain. The memory calls follow verve_agent_save_memory's two-call pattern. */
+VERVE_API verve_result VERVE_CALL verve_brain_save(const verve_brain* brain, const char* path);
+VERVE_API verve_result VERVE_CALL verve_brain_load(const char* path, verve_brain** out);
+VERVE_API verve_result VERVE_CALL verve_brain_save_memory(const verve_brain* brain, void* buffer, size_t* size);
+VERVE_API verve_result VERVE_CALL verve_brain_load_memory(const void* data, size_t size, verve_brain** out);
+
+/* ---- many agents in one call ------------------------------------------------------------ */
+/* A host job system (as Box2D v3's b2WorldDef takes one): enqueue_task runs task over
+ * [0, item_count) in ranges of at least min_range items, on its workers, with worker_index below
+ * verve_batch_desc.worker_count, and returns a handle that finish_task waits on (NULL: the task
+ * already ran inline; finish_task is not called). Both are called from the updating thread only. */
+typedef void (VERVE_CALL *verve_task_fn)(uint32_t start, uint32_t end, uint32_t worker_index, void* task_context);
+typedef void* (VERVE_CALL *verve_enqueue_task_fn)(verve_task_fn task, uint32_t item_count, uint32_t min_range,
+                                                   void* task_context, void* user_context);
+typedef void (VERVE_CALL *verve_finish_task_fn)(void* user_task, void* user_context);
+
+typedef struct verve_batch_desc {
+    uint32_t struct_size;   /* sizeof(verve_batch_desc), set by verve_batch_desc_default */
+    uint32_t worker_count;  /* threads incl. the caller; 0 (default): the machine's; with callbacks: the host's */
+    verve_enqueue_task_fn enqueue_task; /* both NULL (default): Verve's own pool, started lazily */
+    verve_finish_task_fn finish_task;
+    void* user_context;     /* handed to the callbacks */
+} verve_batch_desc;
+
+VERVE_API verve_result VERVE_CALL verve_batch_desc_default(verve_batch_desc* desc);
+VERVE_API verve_result VERVE_CALL verve_batch_create(const verve_batch_desc* desc, verve_batch** out);
+VERVE_API void VERVE_CALL verve_batch_destroy(verve_batch* batch); /* joins its threads; NULL is ignored */
+/* A batch is used by one thread at a time, like an agent. */
+VERVE_API verve_result VERVE_CALL verve_batch_get_worker_count(const verve_batch* batch, uint32_t* out_count);
+/* One step of n agents (any shapes, separate agents or bodies), exactly as n verve_agent_update
+ * calls in array order would do it, on any number of threads. Agent i reads rewards[i] and its
+ * observation from the packed arrays: at discrete_offsets[i] / continuous_offsets[i] when given,
+ * else right after agent i-1's values (agents packed back to back). discrete_total and
+ * continuous_total are the arrays' lengths. Everything is checked first: on any bad input nothing
+ * changes, out_results (optional, n entries) gets each agent's verdict and the call returns the
+ * first agent's error. An update failing later (out of memory) leaves that agent unchanged, the
+ * others updated, and is reported the same way. */
+VERVE_API verve_result VERVE_CALL verve_batch_update(verve_batch* batch, verve_agent* const* agents, uint32_t n,
+    const float* rewards,
+    const int32_t* discrete, const uint32_t* discrete_offsets, uint32_t discrete_total,
+    const float* continuous, const uint32_t* continuous_offsets, uint32_t continuous_total,
+    float dt, uint32_t* out_actions, verve_result* out_results);
 
 #ifdef __cplusplus
 }

@@ -72,10 +72,15 @@ doc docs/scenes.md 'build/samples/runner/verve-demo run npc-arena --trials 10 --
 doc docs/scenes.md 'build/samples/runner/verve-demo run maze2 --runs 10 --out out'
 in_doc docs/scenes.md 'build/samples/runner/verve-demo run pendulum --runs 10 --value-at 1,5,20,100 --out out'
 in_doc docs/scenes.md 'build/samples/runner/verve-demo run cart-pole --seed 1 --out out'
+doc docs/scenes.md 'build/samples/runner/verve-demo compare-brains --seeds 5 --out out' \
+  'build/samples/runner/verve-demo compare-brains --seeds 1 --minutes 1 --out out'
+doc docs/crowds.md 'build/samples/runner/verve-demo compare-brains --seeds 5 --minutes 10 --out out' \
+  'build/samples/runner/verve-demo compare-brains --seeds 1 --minutes 1 --out out'
 
 doc docs/performance.md './scripts/build.sh verve_bench'
 doc docs/performance.md 'build/bench/verve_bench --benchmark_repetitions=3 --benchmark_report_aggregates_only=true' \
   'build/bench/verve_bench --benchmark_list_tests'
+doc docs/performance.md './scripts/bench_crowd.sh' './scripts/bench_crowd.sh --benchmark_filter=tiny/100/'
 doc docs/experiments.md 'cmake -S . -B build -DCMAKE_BUILD_TYPE=Release && cmake --build build -j2'
 doc docs/experiments.md 'build/samples/tasks/verve-experiments list'
 ctest_doc docs/experiments.md 'ctest --test-dir build -L learning'

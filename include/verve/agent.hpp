@@ -79,6 +79,9 @@ public:
     struct Impl;  // internal (src/core/agent_impl.hpp)
 
 private:
+    friend class Brain;  // makes bodies: agents over a shared brain
+    friend class Batch;  // groups agents by brain
+    explicit Agent(std::unique_ptr<Impl> impl);
     std::unique_ptr<Impl> impl_;
 };
 

@@ -6,6 +6,7 @@
 #include <string>
 
 #include "verve/agent.hpp"
+#include "verve/brain.hpp"
 
 namespace verve {
 
@@ -26,5 +27,12 @@ std::string saveAgentToString(const Agent& agent, const SaveOptions& options = {
 // or truncated save, Error(Version) for a newer format. Either format, told by its first bytes.
 Agent loadAgent(const std::string& path);
 Agent loadAgentFromMemory(const char* data, std::size_t size);
+
+// A shared brain is saved as an agent without short-term memory (the same XML format): either
+// kind of save loads as a Brain (its RBFs and weights) or as an Agent.
+void saveBrain(const Brain& brain, const std::string& path);
+std::string saveBrainToString(const Brain& brain);
+Brain loadBrain(const std::string& path);
+Brain loadBrainFromMemory(const char* data, std::size_t size);
 
 }  // namespace verve

@@ -7,9 +7,10 @@
 namespace verve::demo {
 
 ArenaOutcome runArena(std::uint32_t minutes, std::uint64_t seed, std::uint32_t npcs,
-                      const tasks::DescriptorOverride& overrides) {
+                      const tasks::DescriptorOverride& overrides, bool sharedBrain) {
     scenes::NpcArenaConfig config;
     config.npcs = npcs;
+    config.sharedBrain = sharedBrain;
     AgentDescriptor desc = scenes::NpcArena::defaultDescriptor();
     if (overrides) overrides(desc);
     ArenaOutcome outcome;

@@ -16,7 +16,8 @@ struct ArenaOutcome {
     double wallSeconds = 0.0;
 };
 
+// sharedBrain: the NPCs are bodies of one brain instead of separate agents.
 ArenaOutcome runArena(std::uint32_t minutes, std::uint64_t seed, std::uint32_t npcs,
-                      const tasks::DescriptorOverride& overrides);
+                      const tasks::DescriptorOverride& overrides, bool sharedBrain = false);
 
 }  // namespace verve::demo

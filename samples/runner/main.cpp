@@ -8,6 +8,7 @@
 #include <optional>
 
 #include "arena_run.hpp"
+#include "brain_comparison.hpp"
 #include "catalog.hpp"
 #include "learning_run.hpp"
 #include "plots.hpp"
@@ -57,6 +58,7 @@ struct RunFlags {
     std::vector<std::uint32_t> valueAt;
     bool keepGoing = false;
     bool save = true;
+    bool sharedBrain = false;
 };
 
 void listAll() {
@@ -91,9 +93,9 @@ void plotValues(const ValueImage& image, const std::string& base, const std::str
 
 int runArenaCommand(const RunFlags& flags, const AgentFlags& agentFlags) {
     const std::uint32_t minutes = flags.trials > 0 ? flags.trials : 10;
-    std::printf("npc-arena: %u NPCs learning for %u simulated minutes (seed %llu)\n", flags.npcs, minutes,
-                static_cast<unsigned long long>(flags.seed));
-    ArenaOutcome result = runArena(minutes, flags.seed, flags.npcs, agentFlags.overrides());
+    std::printf("npc-arena: %u NPCs learning for %u simulated minutes (seed %llu)%s\n", flags.npcs, minutes,
+                static_cast<unsigned long long>(flags.seed), flags.sharedBrain ? ", one shared brain" : "");
+    ArenaOutcome result = runArena(minutes, flags.seed, flags.npcs, agentFlags.overrides(), flags.sharedBrain);
     const std::string base = (fs::path(flags.out) / "npc-arena").string();
     {
         std::ofstream csv(base + "-curve.csv");
@@ -203,6 +205,14 @@ int main(int argc, char** argv) {
         ->delimiter(',');
     run->add_flag("--keep-going", flags.keepGoing, "cart-pole: keep learning after a trial reaches the cap");
     run->add_flag("!--no-save", flags.save, "do not save the trained agent");
+    run->add_flag("--shared-brain", flags.sharedBrain, "npc-arena: all NPCs are bodies of one shared brain");
+    CLI::App* compare = app.add_subcommand(
+        "compare-brains", "npc-arena: NPCs with one brain each vs one shared brain, over fixed seeds, with a plot");
+    BrainComparison comparison;
+    compare->add_option("--seeds", comparison.seeds, "seeds 1..N, one run per mode each")->check(CLI::Range(1u, 100u));
+    compare->add_option("--minutes", comparison.minutes, "simulated minutes per run")->check(CLI::Range(1u, 1000u));
+    compare->add_option("--npcs", comparison.npcs, "NPCs in the arena")->check(CLI::Range(1u, 64u));
+    compare->add_option("--out", comparison.out, "output directory");
     run->add_option("--resolution", agent.resolution, "RBFs across each continuous sensor")->check(CLI::Range(1u, 1024u));
     run->add_option("--tau-value", agent.tauValue, "critic learning time constant (s)");
     run->add_option("--tau-discount", agent.tauDiscount, "discount time constant (s)");
@@ -218,6 +228,7 @@ int main(int argc, char** argv) {
             listAll();
             return 0;
         }
+        if (*compare) return compareBrains(comparison);
         return runCommand(flags, agent);
     } catch (const verve::Error& e) {
         std::fprintf(stderr, "verve-demo: %s\n", e.what());

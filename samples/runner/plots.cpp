@@ -97,6 +97,22 @@ bool plotCurve(const std::string& csvPath, const std::string& pngPath, const std
     return runGnuplot(gp.str(), pngPath + ".gp");
 }
 
+bool plotColumns(const std::string& csvPath, const std::string& pngPath, const std::string& title,
+                 const std::string& xLabel, const std::string& yLabel, const std::vector<std::string>& labels) {
+    static const char* const colours[] = {"#c0392b", "#1f4e9c", "#27ae60", "#8e44ad"};
+    std::ostringstream gp;
+    gp << kTerminal << "set output " << quoted(pngPath) << "\n"
+       << "set datafile separator ','\nset key top left\nset grid\n"
+       << "set title " << quoted(title) << "\nset xlabel " << quoted(xLabel) << "\nset ylabel "
+       << quoted(yLabel) << "\nplot ";
+    for (std::size_t i = 0; i < labels.size(); ++i) {
+        gp << (i > 0 ? ", \\\n     " : "") << quoted(csvPath) << " using 1:" << i + 2 << " with linespoints lw 2 lc rgb '"
+           << colours[i % 4] << "' title " << quoted(labels[i]);
+    }
+    gp << "\n";
+    return runGnuplot(gp.str(), pngPath + ".gp");
+}
+
 bool plotValueImage(const ValueImage& image, const std::string& dataPath, const std::string& pngPath,
                     const std::string& title) {
     std::ofstream data = openForWriting(dataPath);

@@ -22,6 +22,10 @@ void writeCurveCsv(const std::string& path, const std::vector<CurveSeries>& seri
 bool plotCurve(const std::string& csvPath, const std::string& pngPath, const std::string& title,
                const std::string& xLabel, const std::string& yLabel, std::size_t seriesCount, bool logY = false);
 
+// Columns 2, 3, ... of a CSV (x in column 1, a header row) as one labelled line each.
+bool plotColumns(const std::string& csvPath, const std::string& pngPath, const std::string& title,
+                 const std::string& xLabel, const std::string& yLabel, const std::vector<std::string>& labels);
+
 // Writes the samples as "x y value" rows (or "x value" for one axis) and renders a heat map
 // (a line for one axis).
 bool plotValueImage(const ValueImage& image, const std::string& dataPath, const std::string& pngPath,

@@ -5,6 +5,7 @@
 
 #include "physics_world.hpp"
 #include "scene_util.hpp"
+#include "verve/brain.hpp"
 
 namespace verve::scenes {
 
@@ -37,6 +38,7 @@ NpcArena::NpcArena(const NpcArenaConfig& config, std::uint64_t seed, const Agent
         throw Error(ErrorCode::InvalidArgument,
                     "npc arena: agents need sensors {hazard(3)} + {bearing, distance} and 3 actions");
 
+    std::unique_ptr<Brain> brain;  // with sharedBrain; its bodies keep it alive
     const btScalar h = config.halfSize;
     btTransform floor;
     floor.setIdentity();
@@ -59,7 +61,12 @@ NpcArena::NpcArena(const NpcArenaConfig& config, std::uint64_t seed, const Agent
 
         AgentDescriptor d = agents;
         d.seed = static_cast<std::uint64_t>(random_.uniform(0, 0x1.0p53));
-        agents_.emplace_back(d);
+        if (!config.sharedBrain) {
+            agents_.emplace_back(d);
+            continue;
+        }
+        if (!brain) brain = std::make_unique<Brain>(d);
+        agents_.push_back(brain->makeBody());
     }
     for (std::uint32_t i = 0; i < config.food; ++i) food_.push_back(freeSpot());
     rewards_.assign(config.npcs, 0.0f);

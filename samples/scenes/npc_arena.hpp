@@ -27,6 +27,7 @@ struct NpcArenaConfig {
     float turnRate = 3.0f;           // rad/s reached under full torque
     float physicsStep = 0.01f;       // s
     float agentStep = 0.1f;          // s
+    bool sharedBrain = false;        // every NPC a body of one brain (verve/brain.hpp), not its own agent
 };
 
 // Totals over a stretch of simulated time, summed over all NPCs.
@@ -46,7 +47,8 @@ public:
     enum Hazard : std::int32_t { Clear = 0, Ahead = 1, Inside = 2 };
 
     // Every NPC gets an agent built from `agents` with its own seed drawn from `seed`, which also
-    // decides where NPCs start and food appears: the same seed, the same run.
+    // decides where NPCs start and food appears: the same seed, the same run. With sharedBrain,
+    // the NPCs are bodies of one brain seeded with NPC 0's seed (the same draws either way).
     NpcArena(const NpcArenaConfig& config, std::uint64_t seed,
              const AgentDescriptor& agents = defaultDescriptor());
     ~NpcArena();

@@ -4,6 +4,7 @@
 #include <string>
 
 #include "capi/capi_agent.hpp"
+#include "capi/capi_buffer.hpp"
 #include "verve/io.hpp"
 
 using verve::capi::AgentUse;
@@ -36,15 +37,8 @@ void saveToMemory(const verve_agent* agent, void* buffer, size_t* size, verve::S
         agent->keepSave(verve::saveAgentToString(a, inFormat(format)), format);
         kept = agent->keptSave(format);
     }
-    const size_t capacity = *size;
-    *size = kept->size();
-    if (buffer == nullptr) return;  // the size query
-    if (capacity < kept->size()) {
-        throw verve::Error(verve::ErrorCode::BufferTooSmall, "the buffer holds " + std::to_string(capacity) +
-                                                                 " bytes, the save needs " + std::to_string(kept->size()));
-    }
-    std::memcpy(buffer, kept->data(), kept->size());
-    agent->dropSave();  // delivered: free the copy
+    verve::capi::copyOut(*kept, buffer, *size);
+    if (buffer != nullptr) agent->dropSave();  // delivered: free the copy
 }
 
 }  // namespace

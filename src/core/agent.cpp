@@ -24,15 +24,22 @@ core::WeightLayout weightLayoutFor(const AgentDescriptor& desc) {
     return layout;
 }
 
-Agent::Impl::Impl(const AgentDescriptor& d)
-    : desc((d.validate(), d)),
-      rep(desc),
-      weights(weightLayoutFor(desc)),
+BrainState::BrainState(const AgentDescriptor& d)
+    : desc((d.validate(), d)), rep(desc), weights(weightLayoutFor(desc)) {
+    weights.resize(rep.featureCount());
+}
+
+Agent::Impl::Impl(const AgentDescriptor& d) : Impl(std::make_shared<BrainState>(d), d.seed) {}
+
+Agent::Impl::Impl(std::shared_ptr<BrainState> shared, std::uint64_t seed)
+    : brain(std::move(shared)),
+      desc(brain->desc),
+      rep(brain->rep),
+      weights(brain->weights),
       td(desc.numActions, desc.traceThreshold),
-      rng(desc.seed),
+      rng(seed),
       model(desc),
       planner(desc) {
-    weights.resize(rep.featureCount());
     previousDiscrete.assign(desc.discreteSensors.size(), 0);
     previousContinuous.assign(desc.continuousSensors.size(), 0.0f);
     normalized.reserve(desc.continuousSensors.size());
@@ -120,6 +127,7 @@ void Agent::Impl::resetShortTermMemory() {
 }
 
 Agent::Agent(const AgentDescriptor& descriptor) : impl_(std::make_unique<Impl>(descriptor)) {}
+Agent::Agent(std::unique_ptr<Impl> impl) : impl_(std::move(impl)) {}
 Agent::~Agent() = default;
 Agent::Agent(Agent&&) noexcept = default;
 Agent& Agent::operator=(Agent&&) noexcept = default;
@@ -155,9 +163,11 @@ std::uint32_t Agent::update(float reward, ObservationView obs, float dt) {
         if (plans) s.learnModel(r, obs.discrete, dt);
         if (s.learnsFromRealSteps()) {
             // V(s) is the value the previous update left in stats.value: no weight changes
-            // between two updates (endEpisode, resets and restores clear or recompute it).
+            // between two updates (endEpisode, resets and restores clear or recompute it),
+            // unless other bodies of a shared brain trained it since.
+            const float before = s.sharesBrain ? s.td.value(s.weights, s.previous) : s.stats.value;
             const float next = core::bounded(s.td.value(s.weights, s.current), k.valueBound);
-            const float delta = r + k.gamma * next - core::bounded(s.stats.value, k.valueBound);
+            const float delta = r + k.gamma * next - core::bounded(before, k.valueBound);
             s.td.trainAndDecay(s.weights, delta, k.rates, k.traceDecay);
             s.stats.tdError = delta;
         }

@@ -1,8 +1,11 @@
 // The agent's internals, shared by the files that implement verve::Agent
-// (agent.cpp: stepping; agent_snapshot.cpp: snapshot and restore; value_sampling.cpp).
+// (agent.cpp: stepping; agent_snapshot.cpp: snapshot and restore; value_sampling.cpp; brain.cpp).
 #pragma once
 #include <cstdint>
+#include <memory>
 #include <vector>
+
+#include "core/brain_state.hpp"
 
 #include "core/planner.hpp"
 #include "core/predictive_model.hpp"
@@ -23,7 +26,9 @@ struct StepConstants {
 };
 
 struct Agent::Impl {
-    explicit Impl(const AgentDescriptor& desc);
+    explicit Impl(const AgentDescriptor& desc);  // with a brain of its own
+    // A body of a shared brain: its own short-term memory and random stream `seed`.
+    Impl(std::shared_ptr<BrainState> shared, std::uint64_t seed);
 
     StepConstants constantsFor(float dt) const;
     void resetShortTermMemory();
@@ -43,9 +48,13 @@ struct Agent::Impl {
     static constexpr float kModelErrorAveraging = 0.05f;  // stats.modelError: ~20-step running mean
     bool learnsFromRealSteps() const { return !desc.planning || desc.learnFromRealSteps; }
 
-    AgentDescriptor desc;
-    core::StateRepresentation rep;
-    core::WeightTable weights;
+    std::shared_ptr<BrainState> brain;
+    // The brain's, by reference: a body reads and trains the weights every body of its brain shares.
+    AgentDescriptor& desc;
+    core::StateRepresentation& rep;
+    core::WeightTable& weights;
+    // Other bodies change the shared weights between two updates of this one.
+    bool sharesBrain = false;
     core::TdLearner td;
     core::Rng rng;
     core::PredictiveModel model;
@@ -71,5 +80,10 @@ struct Agent::Impl {
 };
 
 core::WeightLayout weightLayoutFor(const AgentDescriptor& desc);
+
+// agent_snapshot.cpp: rebuilds an agent from a snapshot (validating every field), and writes
+// what a brain holds (descriptor, RBFs, weights) into a snapshot.
+std::unique_ptr<Agent::Impl> restoreAgent(const AgentSnapshot& snapshot);
+void snapshotBrain(const BrainState& brain, AgentSnapshot& out);
 
 }  // namespace verve

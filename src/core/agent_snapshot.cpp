@@ -22,7 +22,9 @@ void requireSize(std::size_t actual, std::size_t expected, const char* what) {
     }
 }
 
-std::unique_ptr<Agent::Impl> restore(const AgentSnapshot& snap) {
+}  // namespace
+
+std::unique_ptr<Agent::Impl> restoreAgent(const AgentSnapshot& snap) {
     AgentDescriptor desc = snap.descriptor;
     // Saved features are restored one by one, whatever the allocation mode.
     desc.allocation = RbfAllocation::Dynamic;
@@ -111,18 +113,21 @@ std::unique_ptr<Agent::Impl> restore(const AgentSnapshot& snap) {
     return impl;
 }
 
-}  // namespace
+void snapshotBrain(const BrainState& brain, AgentSnapshot& snap) {
+    snap.descriptor = brain.desc;
+    brain.rep.features(snap.featureKeys, snap.centres);
+    snap.stride = brain.weights.stride();
+    snap.weights = brain.weights.data();
+    snap.traceStride = 1 + brain.desc.numActions;
+}
 
-Agent::Agent(const AgentSnapshot& snapshot) : impl_(restore(snapshot)) {}
+Agent::Agent(const AgentSnapshot& snapshot) : impl_(restoreAgent(snapshot)) {}
 
 AgentSnapshot Agent::snapshot() const {
     const Impl& s = *impl_;
     AgentSnapshot snap;
-    snap.descriptor = s.desc;
+    snapshotBrain(*s.brain, snap);
     snap.learning = s.learning;
-    s.rep.features(snap.featureKeys, snap.centres);
-    snap.stride = s.weights.stride();
-    snap.weights = s.weights.data();
     snap.traceStride = s.td.traceStride();
     snap.traceFeatures = s.td.liveFeatures();
     snap.traces = s.td.liveTraces();

@@ -14,6 +14,11 @@ std::uint64_t splitmix64(std::uint64_t& x) {
 
 }  // namespace
 
+std::uint64_t streamSeed(std::uint64_t seed, std::uint64_t stream) {
+    std::uint64_t x = seed ^ (stream * 0xd1b54a32d192ed03ULL);
+    return splitmix64(x);
+}
+
 Rng::Rng(std::uint64_t seed) {
     // splitmix64 never yields an all-zero xoshiro state, whatever the seed.
     for (auto& word : s_) word = splitmix64(seed);

@@ -6,6 +6,10 @@
 
 namespace verve::core {
 
+// The seed of stream `stream` of a family seeded with `seed` (e.g. the bodies of one brain):
+// distinct, well-mixed streams, the same on every platform.
+std::uint64_t streamSeed(std::uint64_t seed, std::uint64_t stream);
+
 class Rng {
 public:
     explicit Rng(std::uint64_t seed = 1);

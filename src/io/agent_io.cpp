@@ -20,38 +20,59 @@ auto naming(const std::string& context, F&& body) -> decltype(body()) {
     }
 }
 
-Agent agentFrom(const char* data, std::size_t size) {
-    AgentSnapshot snapshot = io::looksBinary(data, size) ? io::snapshotFromBinary(data, size) : io::snapshotFromXml(data, size);
-    return Agent(snapshot);  // the core checks what io cannot (e.g. the weight stride): Error(Format)
+AgentSnapshot snapshotFrom(const char* data, std::size_t size) {
+    return io::looksBinary(data, size) ? io::snapshotFromBinary(data, size) : io::snapshotFromXml(data, size);
 }
 
-std::string encode(const Agent& agent, const SaveOptions& options) {
-    const AgentSnapshot snapshot = agent.snapshot();
+// Agent or Brain: the core checks what io cannot (e.g. the weight stride): Error(Format).
+template <typename Learner>
+Learner from(const char* data, std::size_t size) {
+    return Learner(snapshotFrom(data, size));
+}
+
+template <typename Learner>
+Learner load(const std::string& path) {
+    return naming("load '" + path + "'", [&] {
+        const std::string data = io::readWholeFile(path);
+        return from<Learner>(data.data(), data.size());
+    });
+}
+
+std::string encode(const AgentSnapshot& snapshot, const SaveOptions& options) {
     return options.format == SaveFormat::Binary ? io::snapshotToBinary(snapshot, options.includeTraces)
                                                 : io::snapshotToXml(snapshot, options.includeTraces);
+}
+
+void save(const AgentSnapshot& snapshot, const std::string& path, const SaveOptions& options) {
+    naming("save '" + path + "'", [&] { io::writeFileAtomically(path, encode(snapshot, options)); });
 }
 
 }  // namespace
 
 std::string saveAgentToString(const Agent& agent, const SaveOptions& options) {
-    return naming("save", [&] { return encode(agent, options); });
+    return naming("save", [&] { return encode(agent.snapshot(), options); });
 }
 
 void saveAgent(const Agent& agent, const std::string& path, const SaveOptions& options) {
-    naming("save '" + path + "'", [&] {
-        io::writeFileAtomically(path, encode(agent, options));
-    });
+    save(agent.snapshot(), path, options);
 }
 
-Agent loadAgent(const std::string& path) {
-    return naming("load '" + path + "'", [&] {
-        const std::string data = io::readWholeFile(path);
-        return agentFrom(data.data(), data.size());
-    });
-}
+Agent loadAgent(const std::string& path) { return load<Agent>(path); }
 
 Agent loadAgentFromMemory(const char* data, std::size_t size) {
-    return naming("load from memory", [&] { return agentFrom(data, size); });
+    return naming("load from memory", [&] { return from<Agent>(data, size); });
+}
+
+std::string saveBrainToString(const Brain& brain) {
+    return naming("save", [&] { return io::snapshotToXml(brain.snapshot(), false); });
+}
+
+void saveBrain(const Brain& brain, const std::string& path) { save(brain.snapshot(), path, SaveOptions{false}); }
+
+Brain loadBrain(const std::string& path) { return load<Brain>(path); }
+
+Brain loadBrainFromMemory(const char* data, std::size_t size) {
+    return naming("load from memory", [&] { return from<Brain>(data, size); });
 }
 
 }  // namespace verve

@@ -53,6 +53,13 @@ int main(void) {
     FIELD(verve_value_axis, index);
     FIELD(verve_value_axis, samples);
 
+    SIZE(verve_batch_desc);
+    FIELD(verve_batch_desc, struct_size);
+    FIELD(verve_batch_desc, worker_count);
+    FIELD(verve_batch_desc, enqueue_task);
+    FIELD(verve_batch_desc, finish_task);
+    FIELD(verve_batch_desc, user_context);
+
     printf("const VERVE_AGENT_DESC_SIZE_V2 %u\n", (unsigned)VERVE_AGENT_DESC_SIZE_V2);
     printf("const VERVE_AGENT_DESC_SIZE_V3 %u\n", (unsigned)VERVE_AGENT_DESC_SIZE_V3);
     printf("const VERVE_VERSION_NUMBER %d\n", VERVE_VERSION_NUMBER);

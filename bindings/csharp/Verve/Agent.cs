@@ -27,13 +27,13 @@ namespace Verve
             _handle = new AgentHandle(agent);
         }
 
-        private Agent(IntPtr agent) => _handle = new AgentHandle(agent);
+        internal Agent(IntPtr agent) => _handle = new AgentHandle(agent);
 
         /// <summary>Whether <see cref="Dispose"/> has been called.</summary>
         public bool IsDisposed => _handle.IsClosed;
 
         // Checked on every call so a disposed agent fails with a clear message, not a marshalling error.
-        private AgentHandle Handle => _handle.IsClosed ? throw new ObjectDisposedException(nameof(Agent)) : _handle;
+        internal AgentHandle Handle => _handle.IsClosed ? throw new ObjectDisposedException(nameof(Agent)) : _handle;
 
         /// <summary>One step: learn from <paramref name="reward"/> (earned by the previous action, clamped
         /// to [-1, 1]) and the new observation, and choose the next action. Null arrays mean no sensors of that kind.</summary>
@@ -242,7 +242,7 @@ namespace Verve
         /// <summary>Frees the native agent. Further calls throw <see cref="ObjectDisposedException"/>.</summary>
         public void Dispose() => _handle.Dispose();
 
-        private static byte[] NulTerminatedUtf8(string path)
+        internal static byte[] NulTerminatedUtf8(string path)
         {
             if (path == null) throw new ArgumentNullException(nameof(path));
             if (path.IndexOf('\0') >= 0) throw new ArgumentException("path contains a NUL character", nameof(path));

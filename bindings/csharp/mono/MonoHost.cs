@@ -62,14 +62,15 @@ static class MonoHost
               "AgentOptions.set_Planning(Boolean); AgentOptions.set_TauModel(Single); AgentOptions.set_MaxPlanningSteps(Int32); " +
               "AgentOptions.set_PlanningUncertaintyThreshold(Single); AgentOptions.set_Curiosity(Curiosity); " +
               "AgentOptions.set_CuriosityFactor(Single); AgentOptions.set_PlanningAccumulatesUncertainty(Boolean); " +
-              "AgentOptions.set_LearnFromRealSteps(Boolean); AgentOptions.set_DiscretePrediction(DiscretePrediction); " +
+              "AgentOptions.set_LearnFromRealSteps(Boolean); AgentOptions.set_DiscretePrediction(DiscretePrediction); AgentOptions.set_MaxRbfs(Int64); " +
               "Agent..ctor(AgentOptions); Agent.get_Options(); " +
               "AgentOptions.get_Actions(); AgentOptions.get_Resolution(); AgentOptions.get_RbfAllocation(); " +
               "AgentOptions.get_TauValue(); AgentOptions.get_TauDiscount(); AgentOptions.get_TauEligibility(); " +
               "AgentOptions.get_PolicyMultiplier(); AgentOptions.get_TraceThreshold(); AgentOptions.get_Seed(); " +
               "AgentOptions.get_Planning(); AgentOptions.get_TauModel(); AgentOptions.get_MaxPlanningSteps(); " +
               "AgentOptions.get_PlanningUncertaintyThreshold(); AgentOptions.get_Curiosity(); AgentOptions.get_CuriosityFactor(); " +
-              "AgentOptions.get_PlanningAccumulatesUncertainty(); AgentOptions.get_LearnFromRealSteps(); AgentOptions.get_DiscretePrediction()", () =>
+              "AgentOptions.get_PlanningAccumulatesUncertainty(); AgentOptions.get_LearnFromRealSteps(); AgentOptions.get_DiscretePrediction(); " +
+              "AgentOptions.get_MaxRbfs()", () =>
         {
             s_options = new AgentOptions
             {
@@ -77,7 +78,7 @@ static class MonoHost
                 TauEligibility = 0.15f, PolicyMultiplier = 4f, TraceThreshold = 0.02f, Seed = 7, Planning = true,
                 TauModel = 0.05f, MaxPlanningSteps = 4, PlanningUncertaintyThreshold = 0.4f, Curiosity = Curiosity.Novelty,
                 CuriosityFactor = 2f, PlanningAccumulatesUncertainty = false, LearnFromRealSteps = false,
-                DiscretePrediction = DiscretePrediction.Ordinal,
+                DiscretePrediction = DiscretePrediction.Ordinal, MaxRbfs = 5000,
             }.AddDiscreteSensor(2).AddContinuousSensor(true);
             s_agent = new Agent(s_options);
             AgentOptions back = s_agent.Options;
@@ -86,7 +87,7 @@ static class MonoHost
                     back.PolicyMultiplier == 4f && back.TraceThreshold == 0.02f && back.Seed == 7 && back.Planning &&
                     back.TauModel == 0.05f && back.MaxPlanningSteps == 4 && back.PlanningUncertaintyThreshold == 0.4f &&
                     back.Curiosity == Curiosity.Novelty && back.CuriosityFactor == 2f && !back.PlanningAccumulatesUncertainty &&
-                    !back.LearnFromRealSteps && back.DiscretePrediction == DiscretePrediction.Ordinal &&
+                    !back.LearnFromRealSteps && back.DiscretePrediction == DiscretePrediction.Ordinal && back.MaxRbfs == 5000 &&
                     back.DiscreteSensors.SequenceEqual(new[] { 2 }) && back.ContinuousSensorCircular.SequenceEqual(new[] { true }),
                     "Agent.Options differs from the options it was made with");
         });
@@ -102,12 +103,14 @@ static class MonoHost
 
         Check("Agent.get_Stats(); AgentStats.get_Steps(); AgentStats.get_RbfCount(); AgentStats.get_LiveTraces(); AgentStats.get_Value(); " +
               "AgentStats.get_TdError(); AgentStats.get_ModelError(); AgentStats.get_PredictedUncertainty(); " +
-              "AgentStats.get_PlanningSteps(); AgentStats.get_CuriosityReward(); AgentStats.ToString()", () =>
+              "AgentStats.get_PlanningSteps(); AgentStats.get_CuriosityReward(); AgentStats.get_RbfBudgetHits(); " +
+              "AgentStats.get_ClampedRewards(); AgentStats.ToString()", () =>
         {
             AgentStats s = s_agent.Stats;
             Require(s.Steps == 3 * StepsPerTrial && s.RbfCount == s_agent.RbfCount, "stats disagree with the run: " + s);
             Require(s.LiveTraces >= 0 && s.PlanningSteps >= 0 && !float.IsNaN(s.Value + s.TdError + s.ModelError +
                     s.PredictedUncertainty + s.CuriosityReward), "bad stats: " + s);
+            Require(s.RbfBudgetHits == 0 && s.ClampedRewards == 0, "rewards in [0, 1] under the budget were counted: " + s);
             Require(s.ToString().StartsWith("steps=" + s.Steps, StringComparison.Ordinal), "AgentStats.ToString: " + s);
         });
 
@@ -211,6 +214,64 @@ static class MonoHost
             Require(s_agent.IsDisposed, "IsDisposed after Dispose");
             Expect<ObjectDisposedException>(() => s_agent.Update(0f, new[] { 0 }, new[] { 0f }, 0.1f));
             Expect<ObjectDisposedException>(() => { var unused = s_agent.Stats; });
+        });
+
+        // One brain, two bodies, a batch over both on 2 threads: the same actions as updating them in order.
+        Check("Brain..ctor(AgentOptions); Brain.CreateBody(); Brain.get_RbfCount(); Batch..ctor(Int32); Batch.get_WorkerCount(); " +
+              "Batch.Update(Agent[], ReadOnlySpan<Single>, ReadOnlySpan<Int32>, ReadOnlySpan<Single>, Single, Span<Int32>, Span<ResultCode>); " +
+              "Batch.Dispose()", () =>
+        {
+            var options = new AgentOptions { Actions = 2, Seed = 3 }.AddContinuousSensor();
+            Brain solo = new Brain(options), crowd = new Brain(options);
+            Agent[] soloBodies = { solo.CreateBody(), solo.CreateBody() };
+            Agent[] bodies = { crowd.CreateBody(), crowd.CreateBody() };
+            var batch = new Batch(2);
+            Require(batch.WorkerCount == 2, "worker count");
+            var actions = new int[2];
+            var results = new ResultCode[2];
+            for (int step = 0; step < 50; step++)
+            {
+                float[] sensors = { (float)Math.Sin(step * 0.3), (float)Math.Cos(step * 0.2) };
+                float[] rewards = { step % 3 == 0 ? 1f : 0f, 0f };
+                int a0 = soloBodies[0].Update(rewards[0], null, new[] { sensors[0] }, 0.1f);
+                int a1 = soloBodies[1].Update(rewards[1], null, new[] { sensors[1] }, 0.1f);
+                batch.Update(bodies, rewards, new int[0], sensors, 0.1f, actions, results);
+                Require(actions[0] == a0 && actions[1] == a1, "the batch acted unlike updates in order");
+            }
+            Require(crowd.RbfCount == solo.RbfCount && crowd.RbfCount > 0, "RBF counts differ");
+            float[] nan = { float.NaN, 0f };
+            var e = Expect<VerveException>(() => batch.Update(bodies, new float[2], new int[0], nan, 0.1f, actions, results));
+            Require(e.Code == ResultCode.InvalidArgument && results[0] == ResultCode.InvalidArgument && results[1] == ResultCode.Ok,
+                "a bad input was not reported per agent");
+            batch.Dispose();
+            Expect<ObjectDisposedException>(() => { var unused = batch.WorkerCount; });
+            foreach (Agent a in soloBodies.Concat(bodies)) a.Dispose();
+            solo.Dispose();
+            crowd.Dispose();
+        });
+
+        Check("Brain.SaveToBytes(); Brain.LoadFromBytes(ReadOnlySpan<Byte>); Brain.Save(String); Brain.Load(String); " +
+              "Brain.Dispose(); Brain.get_IsDisposed()", () =>
+        {
+            var brain = new Brain(new AgentOptions { Actions = 2 }.AddContinuousSensor());
+            Agent body = brain.CreateBody();
+            for (int step = 0; step < 20; step++) body.Update(1f, null, new[] { 0.5f }, 0.1f);
+            byte[] bytes = brain.SaveToBytes();
+            Brain copy = Brain.LoadFromBytes(bytes);
+            Require(copy.RbfCount == brain.RbfCount, "a loaded brain has other RBFs");
+            string path = Path.Combine(Path.GetTempPath(), "verve-mono-brain-" + Guid.NewGuid().ToString("N") + ".xml");
+            brain.Save(path);
+            Brain fromFile = Brain.Load(path);
+            File.Delete(path);
+            Require(fromFile.RbfCount == brain.RbfCount, "a brain loaded from a file has other RBFs");
+            Require(!brain.IsDisposed, "disposed too early");
+            brain.Dispose();
+            Require(brain.IsDisposed, "IsDisposed after Dispose");
+            body.Update(0f, null, new[] { 0.5f }, 0.1f);  // the body keeps the brain alive
+            Expect<ObjectDisposedException>(() => brain.CreateBody());
+            body.Dispose();
+            copy.Dispose();
+            fromFile.Dispose();
         });
     }
 

@@ -7,6 +7,7 @@
 #include <float.h>
 #include <stddef.h>
 #include <stdint.h>
+#include <stdlib.h>
 #include <string.h>
 
 #include <verve_c.h>
@@ -20,12 +21,29 @@
 #endif
 
 #define LV_AGENT_MT "verve.agent"
+#define LV_BRAIN_MT "verve.brain"
+#define LV_BATCH_MT "verve.batch"
 /* sample_values refuses more points than this instead of allocating without bound. */
 #define LV_MAX_SAMPLES (1u << 24)
 
 typedef struct lv_agent {
     verve_agent* handle; /* NULL once closed */
 } lv_agent;
+
+typedef struct lv_brain {
+    verve_brain* handle; /* NULL once closed */
+} lv_brain;
+
+/* A batch and the packed arrays its update reads and writes, grown as crowds grow. */
+typedef struct lv_batch {
+    verve_batch* handle; /* NULL once closed */
+    uint32_t capacity;   /* agents the arrays hold */
+    verve_agent** agents;
+    float* rewards;
+    int32_t* discrete;   /* VERVE_MAX_DISCRETE_SENSORS per agent */
+    float* continuous;   /* VERVE_MAX_CONTINUOUS_SENSORS per agent */
+    uint32_t* actions;
+} lv_batch;
 
 typedef struct lv_obs {
     int32_t discrete[VERVE_MAX_DISCRETE_SENSORS]; /* 0-based, as the C ABI wants them */
@@ -591,23 +609,29 @@ static int lv_save_file(lua_State* L, lv_file_save save, const char* name) {
     return 0;
 }
 
-static int lv_save_memory(lua_State* L, lv_memory_save save, const char* name) {
+static verve_brain* lv_open_brain(lua_State* L);
+
+/* The save of an agent (`agent_save`) or, when it is NULL, of a brain at index 1 as a Lua string. */
+static int lv_push_save(lua_State* L, lv_memory_save agent_save, const char* name) {
     size_t size = 0;
     void* buffer;
-    verve_result r = save(lv_open_agent(L), NULL, &size);
+    verve_result r = agent_save ? agent_save(lv_open_agent(L), NULL, &size)
+                                : verve_brain_save_memory(lv_open_brain(L), NULL, &size);
     if (r != VERVE_OK && r != VERVE_ERROR_BUFFER_TOO_SMALL) return lv_fail(L, name, r);
     buffer = lua_newuserdata(L, size ? size : 1); /* collected by Lua, even if a later call errors */
-    r = save(lv_open_agent(L), buffer, &size); /* a finalizer may have closed it */
+    /* Opened again: a finalizer run by that allocation may have closed it. */
+    r = agent_save ? agent_save(lv_open_agent(L), buffer, &size)
+                   : verve_brain_save_memory(lv_open_brain(L), buffer, &size);
     if (r != VERVE_OK) return lv_fail(L, name, r);
     lua_pushlstring(L, (const char*)buffer, size);
     return 1;
 }
 
 static int lv_save(lua_State* L) { return lv_save_file(L, verve_agent_save, "save"); }
-static int lv_save_string(lua_State* L) { return lv_save_memory(L, verve_agent_save_memory, "save_string"); }
+static int lv_save_string(lua_State* L) { return lv_push_save(L, verve_agent_save_memory, "save_string"); }
 static int lv_save_binary(lua_State* L) { return lv_save_file(L, verve_agent_save_binary, "save_binary"); }
 static int lv_save_binary_string(lua_State* L) {
-    return lv_save_memory(L, verve_agent_save_memory_binary, "save_binary_string");
+    return lv_push_save(L, verve_agent_save_memory_binary, "save_binary_string");
 }
 
 /* close, __gc and __close: idempotent. */
@@ -633,6 +657,237 @@ static int lv_tostring(lua_State* L) {
     }
     return 1;
 }
+
+/* ---- one brain, many bodies ------------------------------------------------------------ */
+
+static lv_brain* lv_push_brain(lua_State* L) {
+    lv_brain* ud = (lv_brain*)lua_newuserdata(L, sizeof *ud);
+    ud->handle = NULL;
+    luaL_setmetatable(L, LV_BRAIN_MT);
+    return ud;
+}
+
+static verve_brain* lv_open_brain(lua_State* L) {
+    lv_brain* ud = (lv_brain*)luaL_checkudata(L, 1, LV_BRAIN_MT);
+    if (!ud->handle) luaL_error(L, "verve: the brain is closed");
+    return ud->handle;
+}
+
+static int lv_new_brain(lua_State* L) {
+    verve_agent_desc d;
+    lv_brain* ud;
+    verve_result r;
+    lv_read_desc(L, 1, &d);
+    ud = lv_push_brain(L);
+    r = verve_brain_create(&d, &ud->handle);
+    if (r != VERVE_OK) return lv_fail(L, "brain", r);
+    return 1;
+}
+
+static int lv_load_brain(lua_State* L) {
+    const char* path = luaL_checkstring(L, 1);
+    lv_brain* ud = lv_push_brain(L);
+    verve_result r = verve_brain_load(path, &ud->handle);
+    if (r != VERVE_OK) return lv_fail(L, "load_brain", r);
+    return 1;
+}
+
+static int lv_load_brain_string(lua_State* L) {
+    size_t size = 0;
+    const char* data = luaL_checklstring(L, 1, &size);
+    lv_brain* ud = lv_push_brain(L);
+    verve_result r = verve_brain_load_memory(data, size, &ud->handle);
+    if (r != VERVE_OK) return lv_fail(L, "load_brain_string", r);
+    return 1;
+}
+
+static int lv_brain_body(lua_State* L) {
+    verve_brain* b = lv_open_brain(L);
+    lv_agent* ud = lv_push_agent(L);
+    verve_result r = verve_brain_create_body(b, &ud->handle);
+    if (r != VERVE_OK) return lv_fail(L, "body", r);
+    return 1;
+}
+
+static int lv_brain_rbf_count(lua_State* L) {
+    uint32_t n = 0;
+    verve_result r = verve_brain_get_rbf_count(lv_open_brain(L), &n);
+    if (r != VERVE_OK) return lv_fail(L, "rbf_count", r);
+    lua_pushinteger(L, (lua_Integer)n);
+    return 1;
+}
+
+static int lv_brain_save(lua_State* L) {
+    verve_brain* b = lv_open_brain(L);
+    verve_result r = verve_brain_save(b, luaL_checkstring(L, 2));
+    if (r != VERVE_OK) return lv_fail(L, "save", r);
+    return 0;
+}
+
+static int lv_brain_save_string(lua_State* L) { return lv_push_save(L, NULL, "save_string"); }
+
+static int lv_brain_close(lua_State* L) {
+    lv_brain* ud = (lv_brain*)luaL_checkudata(L, 1, LV_BRAIN_MT);
+    verve_brain_destroy(ud->handle);
+    ud->handle = NULL;
+    return 0;
+}
+
+/* ---- batches ---------------------------------------------------------------------------- */
+
+static lv_batch* lv_check_batch(lua_State* L) {
+    lv_batch* ud = (lv_batch*)luaL_checkudata(L, 1, LV_BATCH_MT);
+    if (!ud->handle) luaL_error(L, "verve: the batch is closed");
+    return ud;
+}
+
+static void lv_batch_free_arrays(lv_batch* b) {
+    free(b->agents);
+    free(b->rewards);
+    free(b->discrete);
+    free(b->continuous);
+    free(b->actions);
+    b->agents = NULL;
+    b->rewards = NULL;
+    b->discrete = NULL;
+    b->continuous = NULL;
+    b->actions = NULL;
+    b->capacity = 0;
+}
+
+/* verve.batch{workers = n}: n threads (the caller included); 0 or absent: one per core. */
+static int lv_new_batch(lua_State* L) {
+    static const char* const keys[] = {"workers", NULL};
+    verve_batch_desc d;
+    lv_batch* ud;
+    verve_result r;
+    verve_batch_desc_default(&d);
+    if (!lua_isnoneornil(L, 1)) {
+        luaL_checktype(L, 1, LUA_TTABLE);
+        lv_check_keys(L, 1, keys, "batch", "batch");
+        lua_getfield(L, 1, "workers");
+        if (!lua_isnil(L, -1) && !lv_get_u32(L, -1, &d.worker_count))
+            luaL_error(L, "verve: batch: workers must be a non-negative integer");
+        lua_pop(L, 1);
+    }
+    ud = (lv_batch*)lua_newuserdata(L, sizeof *ud);
+    memset(ud, 0, sizeof *ud);
+    luaL_setmetatable(L, LV_BATCH_MT);
+    r = verve_batch_create(&d, &ud->handle);
+    if (r != VERVE_OK) return lv_fail(L, "batch", r);
+    return 1;
+}
+
+static void lv_batch_reserve(lua_State* L, lv_batch* b, uint32_t n) {
+    if (n <= b->capacity) return;
+    lv_batch_free_arrays(b);
+    b->agents = (verve_agent**)malloc(n * sizeof *b->agents);
+    b->rewards = (float*)malloc(n * sizeof *b->rewards);
+    b->discrete = (int32_t*)malloc((size_t)n * VERVE_MAX_DISCRETE_SENSORS * sizeof *b->discrete);
+    b->continuous = (float*)malloc((size_t)n * VERVE_MAX_CONTINUOUS_SENSORS * sizeof *b->continuous);
+    b->actions = (uint32_t*)malloc(n * sizeof *b->actions);
+    if (!b->agents || !b->rewards || !b->discrete || !b->continuous || !b->actions) {
+        lv_batch_free_arrays(b);
+        luaL_error(L, "verve: update: out of memory for %d agents", (int)n);
+    }
+    b->capacity = n;
+}
+
+/* batch:update(agents, rewards, observations, dt [, actions]): agents[i] gets rewards[i] and
+ * observations[i] (as agent:update takes them); returns the actions (written into `actions` when
+ * given, so a game loop allocates nothing). Any bad input refuses the whole call. */
+static int lv_batch_update(lua_State* L) {
+    lv_batch* b = lv_check_batch(L);
+    float dt = lv_to_float(luaL_checknumber(L, 5));
+    uint32_t n, i, nd = 0, nc = 0;
+    verve_result r;
+    luaL_checktype(L, 2, LUA_TTABLE);
+    luaL_checktype(L, 3, LUA_TTABLE);
+    luaL_checktype(L, 4, LUA_TTABLE);
+    n = (uint32_t)lua_rawlen(L, 2);
+    if (lua_rawlen(L, 3) != n || lua_rawlen(L, 4) != n)
+        luaL_error(L, "verve: update: %d agents, %d rewards and %d observations: the counts must match", (int)n,
+                   (int)lua_rawlen(L, 3), (int)lua_rawlen(L, 4));
+    lv_batch_reserve(L, b, n);
+    for (i = 0; i < n; ++i) {
+        lv_agent* a;
+        lv_obs o;
+        lua_rawgeti(L, 2, (int)i + 1);
+        a = (lv_agent*)luaL_testudata(L, -1, LV_AGENT_MT);
+        if (!a || !a->handle) luaL_error(L, "verve: update: agents[%d] is not an open agent", (int)i + 1);
+        b->agents[i] = a->handle;
+        lua_pop(L, 1);
+        lua_rawgeti(L, 3, (int)i + 1);
+        if (lua_type(L, -1) != LUA_TNUMBER) luaL_error(L, "verve: update: rewards[%d] must be a number", (int)i + 1);
+        b->rewards[i] = lv_to_float(lua_tonumber(L, -1));
+        lua_pop(L, 1);
+        lua_rawgeti(L, 4, (int)i + 1);
+        lv_read_obs(L, lua_gettop(L), "update", &o);
+        lua_pop(L, 1);
+        memcpy(b->discrete + nd, o.discrete, o.n_discrete * sizeof *o.discrete);
+        memcpy(b->continuous + nc, o.continuous, o.n_continuous * sizeof *o.continuous);
+        nd += o.n_discrete;
+        nc += o.n_continuous;
+    }
+    r = verve_batch_update(b->handle, b->agents, n, b->rewards, b->discrete, NULL, nd, b->continuous, NULL, nc, dt,
+                           b->actions, NULL);
+    if (r != VERVE_OK) return lv_fail_indexed(L, "update", r);
+    if (lua_istable(L, 6)) {
+        lua_settop(L, 6);
+    } else {
+        lua_settop(L, 5);
+        lua_createtable(L, (int)n, 0);
+    }
+    for (i = 0; i < n; ++i) {
+        lua_pushinteger(L, (lua_Integer)b->actions[i] + 1);
+        lua_rawseti(L, -2, (int)i + 1);
+    }
+    return 1;
+}
+
+static int lv_batch_workers(lua_State* L) {
+    uint32_t n = 0;
+    verve_result r = verve_batch_get_worker_count(lv_check_batch(L)->handle, &n);
+    if (r != VERVE_OK) return lv_fail(L, "workers", r);
+    lua_pushinteger(L, (lua_Integer)n);
+    return 1;
+}
+
+static int lv_batch_close(lua_State* L) {
+    lv_batch* ud = (lv_batch*)luaL_checkudata(L, 1, LV_BATCH_MT);
+    verve_batch_destroy(ud->handle);
+    ud->handle = NULL;
+    lv_batch_free_arrays(ud);
+    return 0;
+}
+
+static const luaL_Reg lv_brain_methods[] = {
+    {"body", lv_brain_body},
+    {"rbf_count", lv_brain_rbf_count},
+    {"save", lv_brain_save},
+    {"save_string", lv_brain_save_string},
+    {"close", lv_brain_close},
+    {NULL, NULL},
+};
+
+static const luaL_Reg lv_brain_meta[] = {
+    {"__gc", lv_brain_close},
+    {"__close", lv_brain_close},
+    {NULL, NULL},
+};
+
+static const luaL_Reg lv_batch_methods[] = {
+    {"update", lv_batch_update},
+    {"workers", lv_batch_workers},
+    {"close", lv_batch_close},
+    {NULL, NULL},
+};
+
+static const luaL_Reg lv_batch_meta[] = {
+    {"__gc", lv_batch_close},
+    {"__close", lv_batch_close},
+    {NULL, NULL},
+};
 
 static const luaL_Reg lv_agent_methods[] = {
     {"update", lv_update},
@@ -667,8 +922,24 @@ static const luaL_Reg lv_module[] = {
     {"load_string", lv_load_string},
     {"defaults", lv_defaults},
     {"version", lv_version},
+    {"brain", lv_new_brain},
+    {"load_brain", lv_load_brain},
+    {"load_brain_string", lv_load_brain_string},
+    {"batch", lv_new_batch},
     {NULL, NULL},
 };
+
+/* A metatable `name` with methods as __index and the metamethods in `meta`. */
+static void lv_register_type(lua_State* L, const char* name, const luaL_Reg* meta, const luaL_Reg* methods) {
+    luaL_newmetatable(L, name);
+    luaL_setfuncs(L, meta, 0);
+    lua_newtable(L);
+    luaL_setfuncs(L, methods, 0);
+    lua_setfield(L, -2, "__index");
+    lua_pushstring(L, name);
+    lua_setfield(L, -2, "__name"); /* Lua 5.4 sets it too; LuaJIT's error messages use it */
+    lua_pop(L, 1);
+}
 
 LV_EXPORT int luaopen_verve(lua_State* L) {
     uint32_t v = verve_version();
@@ -677,13 +948,9 @@ LV_EXPORT int luaopen_verve(lua_State* L) {
         return luaL_error(L, "verve: the module needs libverve %d.%d.x (>= %d.%d.%d) but found %d.%d.%d",
                           VERVE_VERSION_MAJOR, VERVE_VERSION_MINOR, VERVE_VERSION_MAJOR, VERVE_VERSION_MINOR,
                           VERVE_VERSION_PATCH, (int)(v >> 16), (int)((v >> 8) & 0xff), (int)(v & 0xff));
-    luaL_newmetatable(L, LV_AGENT_MT);
-    luaL_setfuncs(L, lv_agent_meta, 0);
-    luaL_newlib(L, lv_agent_methods);
-    lua_setfield(L, -2, "__index");
-    lua_pushliteral(L, LV_AGENT_MT);
-    lua_setfield(L, -2, "__name"); /* Lua 5.4 sets it too; LuaJIT's error messages use it */
-    lua_pop(L, 1);
+    lv_register_type(L, LV_AGENT_MT, lv_agent_meta, lv_agent_methods);
+    lv_register_type(L, LV_BRAIN_MT, lv_brain_meta, lv_brain_methods);
+    lv_register_type(L, LV_BATCH_MT, lv_batch_meta, lv_batch_methods);
     luaL_newlib(L, lv_module);
     return 1;
 }

@@ -90,5 +90,48 @@ namespace Verve.Native
 
         [DllImport(Library, CallingConvention = CallingConvention.Cdecl)]
         internal static extern ResultCode verve_agent_save_memory_binary(AgentHandle agent, byte* buffer, ref UIntPtr size);
+
+        // One brain, many bodies.
+        [DllImport(Library, CallingConvention = CallingConvention.Cdecl)]
+        internal static extern ResultCode verve_brain_create(verve_agent_desc* desc, out IntPtr brain);
+
+        [DllImport(Library, CallingConvention = CallingConvention.Cdecl)]
+        internal static extern void verve_brain_destroy(IntPtr brain);
+
+        [DllImport(Library, CallingConvention = CallingConvention.Cdecl)]
+        internal static extern ResultCode verve_brain_create_body(BrainHandle brain, out IntPtr body);
+
+        [DllImport(Library, CallingConvention = CallingConvention.Cdecl)]
+        internal static extern ResultCode verve_brain_get_rbf_count(BrainHandle brain, out uint count);
+
+        [DllImport(Library, CallingConvention = CallingConvention.Cdecl)]
+        internal static extern ResultCode verve_brain_save(BrainHandle brain, byte* path);
+
+        [DllImport(Library, CallingConvention = CallingConvention.Cdecl)]
+        internal static extern ResultCode verve_brain_load(byte* path, out IntPtr brain);
+
+        [DllImport(Library, CallingConvention = CallingConvention.Cdecl)]
+        internal static extern ResultCode verve_brain_save_memory(BrainHandle brain, byte* buffer, ref UIntPtr size);
+
+        [DllImport(Library, CallingConvention = CallingConvention.Cdecl)]
+        internal static extern ResultCode verve_brain_load_memory(byte* data, UIntPtr size, out IntPtr brain);
+
+        // Many agents in one call (Verve's own thread pool: host callbacks are not bound here).
+        [DllImport(Library, CallingConvention = CallingConvention.Cdecl)]
+        internal static extern ResultCode verve_batch_desc_default(verve_batch_desc* desc);
+
+        [DllImport(Library, CallingConvention = CallingConvention.Cdecl)]
+        internal static extern ResultCode verve_batch_create(verve_batch_desc* desc, out IntPtr batch);
+
+        [DllImport(Library, CallingConvention = CallingConvention.Cdecl)]
+        internal static extern void verve_batch_destroy(IntPtr batch);
+
+        [DllImport(Library, CallingConvention = CallingConvention.Cdecl)]
+        internal static extern ResultCode verve_batch_get_worker_count(BatchHandle batch, out uint count);
+
+        [DllImport(Library, CallingConvention = CallingConvention.Cdecl)]
+        internal static extern ResultCode verve_batch_update(BatchHandle batch, IntPtr* agents, uint n, float* rewards,
+            int* discrete, uint* discreteOffsets, uint discreteTotal, float* continuous, uint* continuousOffsets,
+            uint continuousTotal, float dt, uint* actions, ResultCode* results);
     }
 }

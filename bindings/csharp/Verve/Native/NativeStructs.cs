@@ -1,3 +1,4 @@
+using System;
 using System.Runtime.InteropServices;
 
 namespace Verve.Native
@@ -56,6 +57,16 @@ namespace Verve.Native
         public float curiosity_reward;
         public ulong rbf_budget_hits; // V2
         public ulong clamped_rewards;
+    }
+
+    [StructLayout(LayoutKind.Sequential)]
+    internal struct verve_batch_desc
+    {
+        public uint struct_size;
+        public uint worker_count;
+        public IntPtr enqueue_task; // host job-system callbacks: always NULL from C#
+        public IntPtr finish_task;
+        public IntPtr user_context;
     }
 
 #pragma warning restore IDE1006

@@ -1,0 +1,90 @@
+using System;
+#nullable enable
+using System.Runtime.InteropServices;
+using Verve.Native;
+
+namespace Verve
+{
+    /// <summary>Updates many agents in one call on Verve's own worker threads: separate agents of any
+    /// shapes and bodies of shared brains, mixed. The results are exactly those of calling
+    /// <see cref="Agent.Update(float, ReadOnlySpan{int}, ReadOnlySpan{float}, float)"/> on each agent in
+    /// order, for any number of threads. Dispose it to join its threads.</summary>
+    public sealed class Batch : IDisposable
+    {
+        private readonly BatchHandle _handle;
+        private IntPtr[] _agents = Array.Empty<IntPtr>(); // scratch: the native handles of a call
+
+        /// <summary>Creates a batch working on <paramref name="workerCount"/> threads, the caller included;
+        /// 0 uses one per hardware thread. The threads start at the first update.</summary>
+        public unsafe Batch(int workerCount = 0)
+        {
+            if (workerCount < 0) throw new ArgumentOutOfRangeException(nameof(workerCount), workerCount, "must be >= 0");
+            VerveLibrary.EnsureCompatible();
+            verve_batch_desc desc;
+            VerveException.ThrowIfFailed(NativeMethods.verve_batch_desc_default(&desc));
+            desc.worker_count = (uint)workerCount;
+            VerveException.ThrowIfFailed(NativeMethods.verve_batch_create(&desc, out IntPtr batch));
+            _handle = new BatchHandle(batch);
+        }
+
+        private BatchHandle Handle => _handle.IsClosed ? throw new ObjectDisposedException(nameof(Batch)) : _handle;
+
+        /// <summary>Threads working on a batch, the caller included.</summary>
+        public int WorkerCount
+        {
+            get
+            {
+                VerveException.ThrowIfFailed(NativeMethods.verve_batch_get_worker_count(Handle, out uint count));
+                return (int)count;
+            }
+        }
+
+        /// <summary>One step of every agent: agent i earned <c>rewards[i]</c>, and its sensor values are the
+        /// next ones in <paramref name="discrete"/> and <paramref name="continuous"/> (agents packed one after
+        /// another). Writes agent i's action to <c>actions[i]</c>, and, when <paramref name="results"/> is not
+        /// empty, each agent's verdict to <c>results[i]</c>.</summary>
+        /// <exception cref="VerveException">Any bad input (the message names the first bad agent): then no
+        /// agent changed and no action was written.</exception>
+        public unsafe void Update(Agent[] agents, ReadOnlySpan<float> rewards, ReadOnlySpan<int> discrete,
+            ReadOnlySpan<float> continuous, float dt, Span<int> actions, Span<ResultCode> results = default)
+        {
+            if (agents == null) throw new ArgumentNullException(nameof(agents));
+            if (rewards.Length != agents.Length || actions.Length != agents.Length)
+                throw new ArgumentException($"{agents.Length} agents need as many rewards ({rewards.Length}) and actions ({actions.Length})");
+            if (results.Length != 0 && results.Length != agents.Length)
+                throw new ArgumentException($"{agents.Length} agents need as many results ({results.Length}), or none");
+            BatchHandle handle = Handle;
+            if (_agents.Length < agents.Length) _agents = new IntPtr[agents.Length];
+            var held = new AgentHandle?[agents.Length]; // kept alive (not freed by another thread) during the call
+            int taken = 0;
+            try
+            {
+                for (; taken < agents.Length; taken++)
+                {
+                    AgentHandle h = (agents[taken] ?? throw new ArgumentNullException($"agents[{taken}]")).Handle;
+                    bool added = false;
+                    h.DangerousAddRef(ref added);
+                    held[taken] = h;
+                    _agents[taken] = h.DangerousGetHandle();
+                }
+                fixed (IntPtr* a = _agents)
+                fixed (float* r = &MemoryMarshal.GetReference(rewards))
+                fixed (int* d = &MemoryMarshal.GetReference(discrete))
+                fixed (float* c = &MemoryMarshal.GetReference(continuous))
+                fixed (int* o = &MemoryMarshal.GetReference(actions))
+                fixed (ResultCode* v = &MemoryMarshal.GetReference(results))
+                {
+                    VerveException.ThrowIfFailed(NativeMethods.verve_batch_update(handle, a, (uint)agents.Length, r,
+                        d, null, (uint)discrete.Length, c, null, (uint)continuous.Length, dt, (uint*)o, results.Length == 0 ? null : v));
+                }
+            }
+            finally
+            {
+                for (int i = 0; i < taken; i++) held[i]!.DangerousRelease();
+            }
+        }
+
+        /// <summary>Joins the batch's threads and frees it.</summary>
+        public void Dispose() => _handle.Dispose();
+    }
+}

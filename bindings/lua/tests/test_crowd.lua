@@ -1,0 +1,87 @@
+-- Many agents from Lua: a batch gives the same actions as agent:update in order, bodies of one
+-- brain share what they learn, a brain's save round-trips, bad input refuses the whole batch.
+local T = require "helpers"
+local verve = require "verve"
+
+local function crowd()
+  local brain = verve.brain { continuous = { {}, {} }, actions = 2, resolution = 8, seed = 5 }
+  local agents = {
+    verve.agent { discrete = { 4 }, continuous = { {} }, actions = 3, seed = 1 },
+    brain:body(),
+    verve.agent { continuous = { {}, {} }, actions = 2, seed = 2 },
+    brain:body(),
+    brain:body(),
+  }
+  return agents, brain
+end
+
+local function observations(agents, step)
+  local obs, rewards = {}, {}
+  for i, a in ipairs(agents) do
+    local d = a:descriptor()
+    local o = { continuous = {} }
+    for c = 1, #d.continuous do o.continuous[c] = math.sin(0.3 * step + i + c) end
+    if #d.discrete > 0 then o.discrete = { (step + i) % 4 + 1 } end
+    obs[i], rewards[i] = o, ((step + i) % 3 == 0) and 1 or 0
+  end
+  return obs, rewards
+end
+
+T.check("a batch gives the actions of updates in order, on 1 and 2 threads", function()
+  local solo = crowd()
+  local expected = {}
+  for step = 1, 60 do
+    local obs, rewards = observations(solo, step)
+    for i, a in ipairs(solo) do expected[#expected + 1] = a:update(rewards[i], obs[i], 0.1) end
+  end
+  for _, workers in ipairs { 1, 2 } do
+    local agents = crowd()
+    local batch = verve.batch { workers = workers }
+    assert(batch:workers() == workers)
+    local got, actions = {}, {}
+    for step = 1, 60 do
+      local obs, rewards = observations(agents, step)
+      assert(batch:update(agents, rewards, obs, 0.1, actions) == actions, "fills the table it is given")
+      for i = 1, #agents do got[#got + 1] = actions[i] end
+    end
+    for k = 1, #expected do assert(got[k] == expected[k], ("action %d: %d vs %d"):format(k, got[k], expected[k])) end
+    batch:close()
+  end
+end)
+
+T.check("bad input anywhere refuses the whole batch", function()
+  local agents = crowd()
+  local batch = verve.batch()
+  local obs, rewards = observations(agents, 1)
+  local before = agents[4]:save_string()
+  obs[2].continuous[1] = 0 / 0
+  T.expect_library_error("update", batch.update, batch, agents, rewards, obs, 0.1)
+  assert(agents[4]:save_string() == before, "a refused batch changed an agent")
+  T.expect_error("counts must match", batch.update, batch, agents, { 1 }, obs, 0.1)
+  T.expect_error("agents%[2%] is not an open agent", batch.update, batch, { agents[1], 7 }, { 0, 0 }, { {}, {} }, 0.1)
+  T.expect_error("workers must be", verve.batch, { workers = -1 })
+  T.expect_error("unknown batch field", verve.batch, { threads = 2 })
+  batch:close()
+  T.expect_error("the batch is closed", batch.update, batch, agents, rewards, obs, 0.1)
+end)
+
+T.check("bodies of one brain share what they learn; its save loads as a brain and as an agent", function()
+  local brain = verve.brain { continuous = { {} }, actions = 2, seed = 3 }
+  local teacher, pupil = brain:body(), brain:body()
+  for _ = 1, 300 do teacher:update(1, { continuous = { 0.5 } }, 0.1) end
+  pupil:set_learning(false)
+  pupil:update(0, { continuous = { 0.5 } }, 0.1)
+  assert(pupil:value() > 1, "the pupil does not know what the teacher learned: " .. pupil:value())
+  assert(brain:rbf_count() == pupil:rbf_count())
+  local saved = brain:save_string()
+  local copy = verve.load_brain_string(saved)
+  assert(copy:rbf_count() == brain:rbf_count())
+  assert(copy:save_string() == saved)
+  local agent = verve.load_string(saved)
+  agent:update(0, { continuous = { 0.5 } }, 0.1)
+  assert(math.abs(agent:value() - pupil:value()) < 1e-6)
+  T.expect_library_error("load_brain_string", verve.load_brain_string, saved:sub(1, 100))
+  brain:close()
+  teacher:update(1, { continuous = { 0.5 } }, 0.1) -- the body keeps the brain alive
+  T.expect_error("the brain is closed", brain.body, brain)
+end)

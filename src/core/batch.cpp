@@ -1,0 +1,194 @@
+// verve::Batch: validate every input, group the agents by brain, update the groups in parallel.
+#include "verve/batch.hpp"
+
+#include <atomic>
+#include <memory>
+#include <mutex>
+#include <new>
+#include <string>
+#include <thread>
+#include <vector>
+
+#include "core/agent_impl.hpp"
+#include "core/observation_check.hpp"
+#include "core/worker_pool.hpp"
+
+namespace verve {
+namespace {
+
+// Each call marks the brains it meets with a token no other call uses (BrainState::batchToken).
+std::atomic<std::uint64_t> lastToken{0};
+
+[[noreturn]] void refuse(const std::string& message) { throw Error(ErrorCode::InvalidArgument, message); }
+
+// The failure of the lowest-numbered agent, whichever worker saw it first.
+struct FirstFailure {
+    std::mutex mutex;
+    std::size_t index = SIZE_MAX;
+    ErrorCode code = ErrorCode::Internal;
+    std::string message;
+
+    void record(std::size_t i, ErrorCode c, const char* what) noexcept {
+        std::lock_guard<std::mutex> lock(mutex);
+        if (i >= index) return;
+        index = i;
+        code = c;
+        try {
+            message = what;
+        } catch (...) {
+            message.clear();  // out of memory while reporting: the code still says it
+        }
+    }
+    void rethrow() const {
+        if (index != SIZE_MAX) throw Error(code, "agents[" + std::to_string(index) + "]: " + message);
+    }
+};
+
+}  // namespace
+
+struct Batch::Impl {
+    explicit Impl(const BatchOptions& o) : options(o) {}
+
+    void updateGroups(std::uint32_t begin, std::uint32_t end) noexcept;
+    void runOverGroups();
+
+    BatchOptions options;
+    std::unique_ptr<core::WorkerPool> pool;  // started on the first update (own pool only)
+
+    // The call in progress, and scratch reused from call to call.
+    const BatchStep* step = nullptr;
+    std::vector<std::uint32_t> groupOf;     // per agent
+    std::vector<std::uint32_t> groupStart;  // per group: first entry in `order`, plus an end
+    std::vector<std::uint32_t> order;       // agent indices grouped, each group in array order
+    std::vector<ObservationView> views;    // per agent, into the packed arrays
+    std::vector<float> normalized;
+    FirstFailure failure;
+};
+
+Batch::Batch(const BatchOptions& options) : impl_(std::make_unique<Impl>(options)) {
+    const TaskScheduler& s = options.scheduler;
+    if ((s.enqueueTask == nullptr) != (s.finishTask == nullptr)) {
+        refuse("a task scheduler needs both enqueueTask and finishTask (or neither, for Verve's own pool)");
+    }
+    if (s.enqueueTask != nullptr && options.workerCount == 0) refuse("a task scheduler needs its workerCount (>= 1)");
+    if (options.workerCount > 1024) refuse("workerCount " + std::to_string(options.workerCount) + " is above 1024");
+    if (s.enqueueTask == nullptr && impl_->options.workerCount == 0) {
+        impl_->options.workerCount = std::max(1u, std::thread::hardware_concurrency());
+    }
+}
+
+Batch::~Batch() = default;
+
+std::uint32_t Batch::workerCount() const { return impl_->options.workerCount; }
+
+void Batch::Impl::updateGroups(std::uint32_t begin, std::uint32_t end) noexcept {
+    const BatchStep& s = *step;
+    for (std::uint32_t g = begin; g < end; ++g) {
+        for (std::uint32_t k = groupStart[g]; k < groupStart[g + 1]; ++k) {
+            const std::uint32_t i = order[k];
+            ErrorCode code = ErrorCode::Internal;
+            const char* what = "unknown exception";
+            try {
+                s.actions[i] = s.agents[i]->update(s.rewards[i], views[i], s.dt);
+                continue;
+            } catch (const Error& e) {
+                code = e.code();
+                failure.record(i, code, e.what());
+            } catch (const std::bad_alloc&) {
+                code = ErrorCode::OutOfMemory;
+                failure.record(i, code, "out of memory");
+            } catch (const std::exception& e) {
+                failure.record(i, code, e.what());
+            } catch (...) {
+                failure.record(i, code, what);
+            }
+            if (s.results != nullptr) s.results[i] = static_cast<int>(code);
+        }
+    }
+}
+
+void Batch::Impl::runOverGroups() {
+    const auto groups = static_cast<std::uint32_t>(groupStart.size() - 1);
+    const TaskFunction task = [](std::uint32_t begin, std::uint32_t end, std::uint32_t, void* self) {
+        static_cast<Impl*>(self)->updateGroups(begin, end);
+    };
+    // Ranges of about 32 agents: small enough to balance, large enough that a hand-off is cheap.
+    const std::uint32_t minRange = std::max<std::uint32_t>(1, 32u * groups / std::max<std::uint32_t>(1, static_cast<std::uint32_t>(step->count)));
+    const TaskScheduler& host = options.scheduler;
+    if (host.enqueueTask != nullptr) {
+        if (void* handle = host.enqueueTask(task, groups, minRange, this, host.userContext)) {
+            host.finishTask(handle, host.userContext);
+        }
+        return;
+    }
+    if (!pool) pool = std::make_unique<core::WorkerPool>(options.workerCount);
+    pool->run(task, groups, minRange, this);
+}
+
+void Batch::update(const BatchStep& s) {
+    Impl& b = *impl_;
+    if (s.count == 0) return;
+    if (s.count > UINT32_MAX - 1) refuse("count " + std::to_string(s.count) + " is too large");
+    if (s.agents == nullptr || s.rewards == nullptr || s.actions == nullptr) {
+        refuse("agents, rewards and actions must not be NULL");
+    }
+    core::checkTimeStep(s.dt);
+
+    // Check every agent's input and find its group (its brain) before anything changes.
+    const std::uint64_t token = ++lastToken;
+    b.groupOf.resize(s.count);
+    b.views.resize(s.count);
+    b.failure.index = SIZE_MAX;
+    std::uint32_t groups = 0;
+    std::size_t packedDiscrete = 0, packedContinuous = 0;
+    for (std::size_t i = 0; i < s.count; ++i) {
+        int code = 0;
+        try {
+            if (s.agents[i] == nullptr) refuse("agent is NULL");
+            Agent::Impl& a = *s.agents[i]->impl_;
+            const std::size_t nd = a.desc.discreteSensors.size(), nc = a.desc.continuousSensors.size();
+            const std::size_t d = s.discreteOffsets != nullptr ? s.discreteOffsets[i] : packedDiscrete;
+            const std::size_t c = s.continuousOffsets != nullptr ? s.continuousOffsets[i] : packedContinuous;
+            packedDiscrete += nd;
+            packedContinuous += nc;
+            if (nd > 0 && (s.discrete == nullptr || d + nd > s.discreteTotal)) {
+                refuse("its " + std::to_string(nd) + " discrete values at " + std::to_string(d) +
+                       " lie outside the discrete array (" + std::to_string(s.discreteTotal) + " values)");
+            }
+            if (nc > 0 && (s.continuous == nullptr || c + nc > s.continuousTotal)) {
+                refuse("its " + std::to_string(nc) + " continuous values at " + std::to_string(c) +
+                       " lie outside the continuous array (" + std::to_string(s.continuousTotal) + " values)");
+            }
+            b.views[i] = ObservationView{nd > 0 ? s.discrete + d : nullptr, nd, nc > 0 ? s.continuous + c : nullptr, nc};
+            core::checkObservation(a.desc, b.views[i], b.normalized);
+            core::checkFinite(s.rewards[i], "reward");
+            BrainState& brain = *a.brain;
+            if (brain.batchToken != token) {
+                brain.batchToken = token;
+                brain.batchGroup = groups++;
+            }
+            b.groupOf[i] = brain.batchGroup;
+        } catch (const Error& e) {
+            code = static_cast<int>(e.code());
+            b.failure.record(i, e.code(), e.what());
+        }
+        if (s.results != nullptr) s.results[i] = code;
+    }
+    b.failure.rethrow();
+
+    // Counting sort: each group's agents together, in array order.
+    b.groupStart.assign(std::size_t(groups) + 1, 0);
+    for (std::size_t i = 0; i < s.count; ++i) ++b.groupStart[b.groupOf[i] + 1];
+    for (std::uint32_t g = 0; g < groups; ++g) b.groupStart[g + 1] += b.groupStart[g];
+    b.order.resize(s.count);
+    for (std::size_t i = 0; i < s.count; ++i) b.order[b.groupStart[b.groupOf[i]]++] = static_cast<std::uint32_t>(i);
+    for (std::uint32_t g = groups; g > 0; --g) b.groupStart[g] = b.groupStart[g - 1];
+    b.groupStart[0] = 0;
+
+    b.step = &s;
+    b.runOverGroups();
+    b.step = nullptr;
+    b.failure.rethrow();
+}
+
+}  // namespace verve

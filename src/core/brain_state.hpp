@@ -1,0 +1,25 @@
+// What the bodies of one brain share: the descriptor, the RBFs and the learned weights. A plain
+// Agent owns one of its own; a verve::Brain hands the same one to every body it makes.
+#pragma once
+#include <cstdint>
+
+#include "core/state_representation.hpp"
+#include "core/weight_table.hpp"
+#include "verve/agent_descriptor.hpp"
+
+namespace verve {
+
+struct BrainState {
+    explicit BrainState(const AgentDescriptor& d);
+
+    AgentDescriptor desc;
+    core::StateRepresentation rep;
+    core::WeightTable weights;
+    std::uint64_t bodiesMade = 0;  // numbers each new body's random stream
+
+    // Scratch of a batch update (batch.cpp): which group of the current call this brain is in.
+    std::uint64_t batchToken = 0;
+    std::uint32_t batchGroup = 0;
+};
+
+}  // namespace verve
