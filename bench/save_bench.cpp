@@ -28,35 +28,44 @@ verve_agent* tenThousandRbfs() {
     return agent;
 }
 
+using MemorySave = verve_result (*)(const verve_agent*, void*, size_t*);
+
+std::vector<char> savedBy(MemorySave save, verve_agent* agent) {
+    size_t size = 0;
+    save(agent, nullptr, &size);
+    std::vector<char> buffer(size);
+    save(agent, buffer.data(), &size);
+    return buffer;
+}
+
 // The documented two calls: how big, then into the buffer.
-void BM_SaveMemoryTwoCalls(benchmark::State& state) {
+void BM_SaveMemoryTwoCalls(benchmark::State& state, MemorySave save) {
     verve_agent* agent = tenThousandRbfs();
     std::vector<char> buffer;
     for (auto _ : state) {
         size_t size = 0;
-        verve_agent_save_memory(agent, nullptr, &size);
+        save(agent, nullptr, &size);
         buffer.resize(size);
-        verve_agent_save_memory(agent, buffer.data(), &size);
+        save(agent, buffer.data(), &size);
         benchmark::DoNotOptimize(buffer.data());
     }
     state.counters["bytes"] = static_cast<double>(buffer.size());
     verve_agent_destroy(agent);
 }
-BENCHMARK(BM_SaveMemoryTwoCalls)->Unit(benchmark::kMillisecond);
+BENCHMARK_CAPTURE(BM_SaveMemoryTwoCalls, xml, verve_agent_save_memory)->Unit(benchmark::kMillisecond);
+BENCHMARK_CAPTURE(BM_SaveMemoryTwoCalls, binary, verve_agent_save_memory_binary)->Unit(benchmark::kMillisecond);
 
-void BM_LoadMemory(benchmark::State& state) {
+void BM_LoadMemory(benchmark::State& state, MemorySave save) {
     verve_agent* agent = tenThousandRbfs();
-    size_t size = 0;
-    verve_agent_save_memory(agent, nullptr, &size);
-    std::vector<char> buffer(size);
-    verve_agent_save_memory(agent, buffer.data(), &size);
+    const std::vector<char> buffer = savedBy(save, agent);
     for (auto _ : state) {
         verve_agent* loaded = nullptr;
-        verve_agent_load_memory(buffer.data(), size, &loaded);
+        verve_agent_load_memory(buffer.data(), buffer.size(), &loaded);
         verve_agent_destroy(loaded);
     }
     verve_agent_destroy(agent);
 }
-BENCHMARK(BM_LoadMemory)->Unit(benchmark::kMillisecond);
+BENCHMARK_CAPTURE(BM_LoadMemory, xml, verve_agent_save_memory)->Unit(benchmark::kMillisecond);
+BENCHMARK_CAPTURE(BM_LoadMemory, binary, verve_agent_save_memory_binary)->Unit(benchmark::kMillisecond);
 
 }  // namespace

@@ -255,14 +255,19 @@ VERVE_API verve_result VERVE_CALL verve_agent_sample_values(const verve_agent* a
     const int32_t* base_discrete, uint32_t n_discrete, const float* base_continuous, uint32_t n_continuous,
     float* out, uint32_t out_count);
 
-/* ---- persistence (XML) ------------------------------------------------------------------ */
-/* Atomic: written to a temporary file, flushed and renamed, so the previous save survives a crash. */
+/* ---- persistence (XML or compact binary) ------------------------------------------------- */
+/* Atomic: written to a temporary file, flushed and renamed, so the previous save survives a crash.
+ * Load (file or memory) reads either format, told apart by its first bytes. */
 VERVE_API verve_result VERVE_CALL verve_agent_save(const verve_agent* agent, const char* path);
 VERVE_API verve_result VERVE_CALL verve_agent_load(const char* path, verve_agent** out);
 /* To memory: call with buffer NULL (or too small) to get the size needed in *size
  * (VERVE_ERROR_BUFFER_TOO_SMALL when buffer was non-NULL); then call again with a buffer. */
 VERVE_API verve_result VERVE_CALL verve_agent_save_memory(const verve_agent* agent, void* buffer, size_t* size);
 VERVE_API verve_result VERVE_CALL verve_agent_load_memory(const void* data, size_t size, verve_agent** out);
+/* The same saves in the compact binary format (checksummed, little-endian; several times faster
+ * than XML to save and to load). */
+VERVE_API verve_result VERVE_CALL verve_agent_save_binary(const verve_agent* agent, const char* path);
+VERVE_API verve_result VERVE_CALL verve_agent_save_memory_binary(const verve_agent* agent, void* buffer, size_t* size);
 
 /* ---- one brain, many bodies ------------------------------------------------------------ */
 /* A brain holds RBFs, weights and model; each body is a verve_agent with its own short-term

@@ -1,5 +1,6 @@
-// Saving and loading agents as XML (src/io, pugixml). Saves to a path are atomic: a temporary
-// file is written, flushed and renamed over the target, so a crash leaves the old save intact.
+// Saving and loading agents as XML (src/io, pugixml) or as a compact binary save (checksummed,
+// several times faster). Saves to a path are atomic: a temporary file is written, flushed and
+// renamed over the target, so a crash leaves the old save intact. Loading recognises either format.
 #pragma once
 #include <cstddef>
 #include <string>
@@ -9,15 +10,21 @@
 
 namespace verve {
 
+enum class SaveFormat {
+    Xml,     // readable text, format version AgentSnapshot::kFormatVersion
+    Binary,  // little-endian, checksummed (src/io/snapshot_binary.hpp)
+};
+
 struct SaveOptions {
     bool includeTraces = true;  // eligibility traces and the previous step (resume mid-trial)
+    SaveFormat format = SaveFormat::Xml;
 };
 
 void saveAgent(const Agent& agent, const std::string& path, const SaveOptions& options = {});
 std::string saveAgentToString(const Agent& agent, const SaveOptions& options = {});
 
 // Throw Error(Io) when the file cannot be read, Error(Format) naming what is wrong for a corrupt
-// or truncated save, Error(Version) for a newer format.
+// or truncated save, Error(Version) for a newer format. Either format, told by its first bytes.
 Agent loadAgent(const std::string& path);
 Agent loadAgentFromMemory(const char* data, std::size_t size);
 

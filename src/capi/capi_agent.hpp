@@ -9,6 +9,7 @@
 
 #include "capi/capi_guard.hpp"
 #include "verve/agent.hpp"
+#include "verve/io.hpp"
 
 namespace verve::capi {
 
@@ -43,16 +44,18 @@ struct verve_agent {
         return agent_;
     }
 
-    // verve_agent_save_memory's two calls: the size query keeps the bytes it made, and the call
-    // with a buffer copies them if no agent changed in between, instead of serialising again.
-    void keepSave(std::string bytes) const {
+    // verve_agent_save_memory's (and _binary's) two calls: the size query keeps the bytes it made,
+    // and the call with a buffer in the same format copies them if no agent changed in between,
+    // instead of serialising again.
+    void keepSave(std::string bytes, verve::SaveFormat format) const {
         if (!hasSave_) verve::capi::SaveCacheClock::caches().fetch_add(1, std::memory_order_relaxed);
         hasSave_ = true;
         save_ = std::move(bytes);
+        saveFormat_ = format;
         saveAt_ = verve::capi::SaveCacheClock::changes().load(std::memory_order_relaxed);
     }
-    const std::string* keptSave() const {
-        return hasSave_ && saveAt_ == verve::capi::SaveCacheClock::changes().load(std::memory_order_relaxed)
+    const std::string* keptSave(verve::SaveFormat format) const {
+        return hasSave_ && saveFormat_ == format && saveAt_ == verve::capi::SaveCacheClock::changes().load(std::memory_order_relaxed)
                    ? &save_
                    : nullptr;
     }
@@ -71,6 +74,7 @@ private:
     // Mutable: a save is a const call (one agent is used by one thread at a time).
     mutable bool hasSave_ = false;
     mutable std::string save_;
+    mutable verve::SaveFormat saveFormat_ = verve::SaveFormat::Xml;
     mutable std::uint64_t saveAt_ = 0;
 };
 

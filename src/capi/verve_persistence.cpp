@@ -1,4 +1,5 @@
-// Saving and loading agents: XML files (atomic) and memory buffers (two-call size pattern).
+// Saving and loading agents, XML or binary: files (atomic) and memory buffers (two-call size
+// pattern). Loading tells the formats apart by their first bytes.
 #include <cstring>
 #include <string>
 
@@ -10,15 +11,46 @@ using verve::capi::AgentUse;
 using verve::capi::guarded;
 using verve::capi::requireArg;
 
+namespace {
+
+verve::SaveOptions inFormat(verve::SaveFormat format) {
+    verve::SaveOptions options;
+    options.format = format;
+    return options;
+}
+
+void saveToFile(const verve_agent* agent, const char* path, verve::SaveFormat format) {
+    const AgentUse use(agent);
+    const verve::Agent& a = use.agent();
+    requireArg(path, "path");
+    verve::saveAgent(a, path, inFormat(format));
+}
+
+// The two-call buffer save of either format.
+void saveToMemory(const verve_agent* agent, void* buffer, size_t* size, verve::SaveFormat format) {
+    const AgentUse use(agent);
+    const verve::Agent& a = use.agent();
+    requireArg(size, "size");
+    // Serialised once for both calls: the size query keeps its bytes for the call with a buffer.
+    const std::string* kept = agent->keptSave(format);
+    if (kept == nullptr) {
+        agent->keepSave(verve::saveAgentToString(a, inFormat(format)), format);
+        kept = agent->keptSave(format);
+    }
+    verve::capi::copyOut(*kept, buffer, *size);
+    if (buffer != nullptr) agent->dropSave();  // delivered: free the copy
+}
+
+}  // namespace
+
 extern "C" {
 
 VERVE_API verve_result VERVE_CALL verve_agent_save(const verve_agent* agent, const char* path) {
-    return guarded(__func__, [&] {
-        const AgentUse use(agent);
-        const verve::Agent& a = use.agent();
-        requireArg(path, "path");
-        verve::saveAgent(a, path);
-    });
+    return guarded(__func__, [&] { saveToFile(agent, path, verve::SaveFormat::Xml); });
+}
+
+VERVE_API verve_result VERVE_CALL verve_agent_save_binary(const verve_agent* agent, const char* path) {
+    return guarded(__func__, [&] { saveToFile(agent, path, verve::SaveFormat::Binary); });
 }
 
 VERVE_API verve_result VERVE_CALL verve_agent_load(const char* path, verve_agent** out) {
@@ -30,19 +62,11 @@ VERVE_API verve_result VERVE_CALL verve_agent_load(const char* path, verve_agent
 }
 
 VERVE_API verve_result VERVE_CALL verve_agent_save_memory(const verve_agent* agent, void* buffer, size_t* size) {
-    return guarded(__func__, [&] {
-        const AgentUse use(agent);
-        const verve::Agent& a = use.agent();
-        requireArg(size, "size");
-        // Serialised once for both calls: the size query keeps its bytes for the call with a buffer.
-        const std::string* kept = agent->keptSave();
-        if (kept == nullptr) {
-            agent->keepSave(verve::saveAgentToString(a));
-            kept = agent->keptSave();
-        }
-        verve::capi::copyOut(*kept, buffer, *size);
-        if (buffer != nullptr) agent->dropSave();  // delivered: free the copy
-    });
+    return guarded(__func__, [&] { saveToMemory(agent, buffer, size, verve::SaveFormat::Xml); });
+}
+
+VERVE_API verve_result VERVE_CALL verve_agent_save_memory_binary(const verve_agent* agent, void* buffer, size_t* size) {
+    return guarded(__func__, [&] { saveToMemory(agent, buffer, size, verve::SaveFormat::Binary); });
 }
 
 VERVE_API verve_result VERVE_CALL verve_agent_load_memory(const void* data, size_t size, verve_agent** out) {

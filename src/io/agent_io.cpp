@@ -1,7 +1,8 @@
-// verve/io.hpp: the agent's snapshot as XML, to a file (atomically) or to memory.
+// verve/io.hpp: the agent's snapshot as XML or binary, to a file (atomically) or to memory.
 #include "verve/io.hpp"
 
 #include "io/atomic_file.hpp"
+#include "io/snapshot_binary.hpp"
 #include "io/snapshot_xml.hpp"
 
 namespace verve {
@@ -19,50 +20,59 @@ auto naming(const std::string& context, F&& body) -> decltype(body()) {
     }
 }
 
+AgentSnapshot snapshotFrom(const char* data, std::size_t size) {
+    return io::looksBinary(data, size) ? io::snapshotFromBinary(data, size) : io::snapshotFromXml(data, size);
+}
+
 // Agent or Brain: the core checks what io cannot (e.g. the weight stride): Error(Format).
 template <typename Learner>
-Learner fromXml(const char* data, std::size_t size) {
-    return Learner(io::snapshotFromXml(data, size));
+Learner from(const char* data, std::size_t size) {
+    return Learner(snapshotFrom(data, size));
 }
 
 template <typename Learner>
 Learner load(const std::string& path) {
     return naming("load '" + path + "'", [&] {
         const std::string data = io::readWholeFile(path);
-        return fromXml<Learner>(data.data(), data.size());
+        return from<Learner>(data.data(), data.size());
     });
 }
 
-void save(const AgentSnapshot& snapshot, const std::string& path, bool includeTraces) {
-    naming("save '" + path + "'", [&] { io::writeFileAtomically(path, io::snapshotToXml(snapshot, includeTraces)); });
+std::string encode(const AgentSnapshot& snapshot, const SaveOptions& options) {
+    return options.format == SaveFormat::Binary ? io::snapshotToBinary(snapshot, options.includeTraces)
+                                                : io::snapshotToXml(snapshot, options.includeTraces);
+}
+
+void save(const AgentSnapshot& snapshot, const std::string& path, const SaveOptions& options) {
+    naming("save '" + path + "'", [&] { io::writeFileAtomically(path, encode(snapshot, options)); });
 }
 
 }  // namespace
 
 std::string saveAgentToString(const Agent& agent, const SaveOptions& options) {
-    return naming("save", [&] { return io::snapshotToXml(agent.snapshot(), options.includeTraces); });
+    return naming("save", [&] { return encode(agent.snapshot(), options); });
 }
 
 void saveAgent(const Agent& agent, const std::string& path, const SaveOptions& options) {
-    save(agent.snapshot(), path, options.includeTraces);
+    save(agent.snapshot(), path, options);
 }
 
 Agent loadAgent(const std::string& path) { return load<Agent>(path); }
 
 Agent loadAgentFromMemory(const char* data, std::size_t size) {
-    return naming("load from memory", [&] { return fromXml<Agent>(data, size); });
+    return naming("load from memory", [&] { return from<Agent>(data, size); });
 }
 
 std::string saveBrainToString(const Brain& brain) {
     return naming("save", [&] { return io::snapshotToXml(brain.snapshot(), false); });
 }
 
-void saveBrain(const Brain& brain, const std::string& path) { save(brain.snapshot(), path, false); }
+void saveBrain(const Brain& brain, const std::string& path) { save(brain.snapshot(), path, SaveOptions{false}); }
 
 Brain loadBrain(const std::string& path) { return load<Brain>(path); }
 
 Brain loadBrainFromMemory(const char* data, std::size_t size) {
-    return naming("load from memory", [&] { return fromXml<Brain>(data, size); });
+    return naming("load from memory", [&] { return from<Brain>(data, size); });
 }
 
 }  // namespace verve

@@ -147,6 +147,10 @@ TEST_F(CApi, NullPointersAreRefused) {
         verve_agent_load("x.xml", nullptr),
         verve_agent_save_memory(nullptr, nullptr, &size),
         verve_agent_save_memory(agent_, nullptr, nullptr),
+        verve_agent_save_binary(nullptr, "x.bin"),
+        verve_agent_save_binary(agent_, nullptr),
+        verve_agent_save_memory_binary(nullptr, nullptr, &size),
+        verve_agent_save_memory_binary(agent_, nullptr, nullptr),
         verve_agent_load_memory(nullptr, 10, &out),
         verve_agent_load_memory("<x/>", 4, nullptr),
     };
@@ -433,6 +437,59 @@ TEST_F(CApi, MemorySaveTwoCallPattern) {
     verve_agent_destroy(loaded);
 }
 
+std::string binarySaveOf(const verve_agent* agent) {
+    size_t size = 0;
+    EXPECT_EQ(verve_agent_save_memory_binary(agent, nullptr, &size), VERVE_OK) << verve_last_error();
+    std::string bytes(size, '\0');
+    EXPECT_EQ(verve_agent_save_memory_binary(agent, &bytes[0], &size), VERVE_OK) << verve_last_error();
+    bytes.resize(size);
+    return bytes;
+}
+
+TEST_F(CApi, BinarySaveLoadsBackToTheSameAgent) {
+    const std::string bytes = binarySaveOf(agent_);
+    ASSERT_EQ(bytes.compare(0, 8, "VERVEBIN"), 0);
+    EXPECT_LT(bytes.size(), saved().size());
+    size_t tooSmall = bytes.size() - 1;
+    std::string small(tooSmall, 'z');
+    EXPECT_EQ(verve_agent_save_memory_binary(agent_, &small[0], &tooSmall), VERVE_ERROR_BUFFER_TOO_SMALL);
+    EXPECT_EQ(tooSmall, bytes.size());
+    EXPECT_EQ(small, std::string(small.size(), 'z'));
+
+    verve_agent* loaded = nullptr;
+    ASSERT_EQ(verve_agent_load_memory(bytes.data(), bytes.size(), &loaded), VERVE_OK) << verve_last_error();
+    EXPECT_EQ(binarySaveOf(loaded), bytes);
+    std::string xml(1 << 20, '\0');
+    size_t xmlSize = xml.size();
+    ASSERT_EQ(verve_agent_save_memory(loaded, &xml[0], &xmlSize), VERVE_OK);
+    xml.resize(xmlSize);
+    EXPECT_EQ(xml, saved());  // the same agent as the original's XML says
+    verve_agent_destroy(loaded);
+
+    std::string corrupt = bytes;
+    corrupt[corrupt.size() / 2] = static_cast<char>(corrupt[corrupt.size() / 2] ^ 1);
+    verve_agent* none = nullptr;
+    EXPECT_EQ(verve_agent_load_memory(corrupt.data(), corrupt.size(), &none), VERVE_ERROR_FORMAT);
+    EXPECT_NE(lastError().find("checksum"), std::string::npos) << lastError();
+    EXPECT_EQ(none, nullptr);
+}
+
+// A size query in one format never hands its kept bytes to a call in the other.
+TEST_F(CApi, KeptSaveBytesAreDeliveredOnlyInTheirFormat) {
+    const std::string xml = saved();
+    const std::string binary = binarySaveOf(agent_);
+    size_t size = 0;
+    ASSERT_EQ(verve_agent_save_memory(agent_, nullptr, &size), VERVE_OK);
+    std::string out(xml.size() + binary.size(), '\0');
+    size = out.size();
+    ASSERT_EQ(verve_agent_save_memory_binary(agent_, &out[0], &size), VERVE_OK);
+    EXPECT_EQ(out.substr(0, size), binary);
+    ASSERT_EQ(verve_agent_save_memory_binary(agent_, nullptr, &size), VERVE_OK);
+    size = out.size();
+    ASSERT_EQ(verve_agent_save_memory(agent_, &out[0], &size), VERVE_OK);
+    EXPECT_EQ(out.substr(0, size), xml);
+}
+
 // The size query keeps the bytes it serialised for the call with a buffer; any change to an agent
 // in between must give the agent as it is now, never the kept bytes.
 TEST_F(CApi, MemorySaveAfterAChangeIsTheAgentAsItIsNow) {
@@ -502,6 +559,18 @@ TEST_F(CApi, FileSaveAndLoad) {
     verve_agent* out = nullptr;
     EXPECT_EQ(verve_agent_load("/no/such/file.xml", &out), VERVE_ERROR_IO);
     EXPECT_EQ(out, nullptr);
+}
+
+TEST_F(CApi, BinaryFileSaveAndLoad) {
+    const std::string path = ::testing::TempDir() + "verve_capi_test.bin";
+    ASSERT_EQ(verve_agent_save_binary(agent_, path.c_str()), VERVE_OK) << verve_last_error();
+    verve_agent* loaded = nullptr;
+    ASSERT_EQ(verve_agent_load(path.c_str(), &loaded), VERVE_OK) << verve_last_error();
+    EXPECT_EQ(binarySaveOf(loaded), binarySaveOf(agent_));
+    verve_agent_destroy(loaded);
+    std::remove(path.c_str());
+    EXPECT_EQ(verve_agent_save_binary(agent_, "/no/such/dir/agent.bin"), VERVE_ERROR_IO);
+    EXPECT_NE(lastError().find("/no/such/dir/agent.bin"), std::string::npos) << lastError();
 }
 
 // ---- threads -------------------------------------------------------------------------------

@@ -1,6 +1,6 @@
 // Writes the seed corpus of the load targets: a valid memory save of every kind of agent (discrete,
 // continuous, circular, full lattice, planning with each prediction, each curiosity, learning off),
-// each after a few updates so its RBFs, weights and model hold real values. Small on purpose:
+// as XML (<kind>.xml) and binary (<kind>.bin), each after a few updates so its RBFs, weights and model hold real values. Small on purpose:
 // libFuzzer mutates small inputs faster.
 //   verve_fuzz_corpus <dir>
 #include <cstdio>
@@ -30,11 +30,13 @@ const Kind kKinds[] = {
     {"no-sensors", [](verve_agent_desc& d) { d.num_actions = 4; }},
 };
 
-bool writeSave(const verve_agent* agent, const std::string& path) {
+using MemorySave = verve_result (*)(const verve_agent*, void*, size_t*);
+
+bool writeSave(const verve_agent* agent, MemorySave save, const std::string& path) {
     size_t size = 0;
-    if (verve_agent_save_memory(agent, nullptr, &size) != VERVE_OK) return false;
+    if (save(agent, nullptr, &size) != VERVE_OK) return false;
     std::vector<char> bytes(size);
-    if (verve_agent_save_memory(agent, bytes.data(), &size) != VERVE_OK) return false;
+    if (save(agent, bytes.data(), &size) != VERVE_OK) return false;
     FILE* f = std::fopen(path.c_str(), "wb");
     if (f == nullptr) return false;
     const bool ok = std::fwrite(bytes.data(), 1, size, f) == size;
@@ -71,9 +73,10 @@ int main(int argc, char** argv) {
             }
         }
         if (std::string(kind.name) == "discrete") verve_agent_set_learning(agent, 0);
-        const std::string path = std::string(argv[1]) + "/" + kind.name + ".xml";
-        if (!writeSave(agent, path)) {
-            std::fprintf(stderr, "%s: cannot write %s\n", kind.name, path.c_str());
+        const std::string stem = std::string(argv[1]) + "/" + kind.name;
+        if (!writeSave(agent, verve_agent_save_memory, stem + ".xml") ||
+            !writeSave(agent, verve_agent_save_memory_binary, stem + ".bin")) {
+            std::fprintf(stderr, "%s: cannot write %s.xml or .bin\n", kind.name, stem.c_str());
             return 1;
         }
         verve_agent_destroy(agent);

@@ -1,5 +1,5 @@
 // Allocation failure: a fixed scenario (create, 120 updates with RBF growth, planning and an
-// episode end, a save and a load) runs once for every N, with the N-th allocation failing. The
+// episode end, an XML save and load, then a binary save and load) runs once for every N, with the N-th allocation failing. The
 // call that meets the failure must return VERVE_ERROR_OUT_OF_MEMORY and leave the agent exactly
 // as it was (its save byte-identical), and the scenario, retried from there, must end in the same
 // agent as a run without failures. Run under ASan by scripts/sanitize.sh.
@@ -31,7 +31,7 @@ public:
     explicit Scenario(CountingAllocator& allocator) : allocator_(allocator) {}
     ~Scenario() { verve_agent_destroy(agent_); }
 
-    int calls() const { return 124; }
+    int calls() const { return 127; }
 
     // Call i of the scenario on the current agent.
     verve_result call(int i) {
@@ -43,13 +43,13 @@ public:
             uint32_t action = 0;
             return verve_agent_update(agent_, i % 9 == 0 ? 1.0f : -0.1f, &disc, 1, c, 2, 0.1f, &action);
         }
-        if (i == 121) {  // the size query, then the save itself
+        if (i == 121 || i == 124) {  // the size query, then the save itself (XML, then binary)
             size_ = 0;
-            return verve_agent_save_memory(agent_, nullptr, &size_);
+            return (i == 121 ? verve_agent_save_memory : verve_agent_save_memory_binary)(agent_, nullptr, &size_);
         }
-        if (i == 122) {
+        if (i == 122 || i == 125) {
             saved_.assign(size_, '\0');
-            return verve_agent_save_memory(agent_, &saved_[0], &size_);
+            return (i == 122 ? verve_agent_save_memory : verve_agent_save_memory_binary)(agent_, &saved_[0], &size_);
         }
         verve_agent* loaded = nullptr;
         const verve_result r = verve_agent_load_memory(saved_.data(), size_, &loaded);

@@ -21,6 +21,22 @@ inline AgentDescriptor mixedDescriptor(std::uint64_t seed = 7) {
     return d;
 }
 
+// Full lattice, planning, progress curiosity, every non-default planning variant, an RBF budget.
+inline AgentDescriptor plannerDescriptor() {
+    AgentDescriptor d = mixedDescriptor();
+    d.allocation = RbfAllocation::Full;
+    d.resolution = 5;
+    d.planning = true;
+    d.curiosity = CuriosityMode::Progress;
+    d.curiosityFactor = 0.25f;
+    d.maxPlanningSteps = 50;
+    d.planningAccumulatesUncertainty = false;
+    d.learnFromRealSteps = false;
+    d.discretePrediction = DiscretePrediction::Ordinal;
+    d.maxRbfs = 5000;
+    return d;
+}
+
 // A deterministic stream of observations and rewards, the same for every agent that replays it.
 class Feed {
 public:
@@ -89,6 +105,7 @@ inline void expectSameDescriptor(const AgentDescriptor& a, const AgentDescriptor
     EXPECT_EQ(a.planningAccumulatesUncertainty, b.planningAccumulatesUncertainty);
     EXPECT_EQ(a.learnFromRealSteps, b.learnFromRealSteps);
     EXPECT_EQ(a.discretePrediction, b.discretePrediction);
+    EXPECT_EQ(a.maxRbfs, b.maxRbfs);
 }
 
 // Every field, floats compared bit for bit.
@@ -115,6 +132,14 @@ inline void expectSameSnapshot(const AgentSnapshot& a, const AgentSnapshot& b, b
         EXPECT_EQ(a.previousDiscrete, b.previousDiscrete);
         EXPECT_TRUE(sameBits(a.previousContinuous, b.previousContinuous));
     }
+}
+
+// Both agents see the same observations and rewards from here on and keep learning: a loaded
+// agent must choose exactly the same actions and end with exactly the same weights as its original.
+inline void expectSameFuture(Agent& original, Agent& loaded) {
+    Feed a(99), b(99);
+    EXPECT_EQ(drive(original, a, 300), drive(loaded, b, 300));
+    expectSameSnapshot(original.snapshot(), loaded.snapshot());
 }
 
 }  // namespace verve::iotest

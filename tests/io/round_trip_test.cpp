@@ -10,18 +10,10 @@
 namespace verve {
 namespace {
 
-using iotest::drive;
+using iotest::expectSameFuture;
 using iotest::expectSameSnapshot;
-using iotest::Feed;
 using iotest::trainedAgent;
 
-// Both agents see the same observations and rewards from here on and keep learning: the loaded one
-// must choose exactly the same actions and end with exactly the same weights.
-void expectSameFuture(Agent& original, Agent& loaded) {
-    Feed a(99), b(99);
-    EXPECT_EQ(drive(original, a, 300), drive(loaded, b, 300));
-    expectSameSnapshot(original.snapshot(), loaded.snapshot());
-}
 
 TEST(RoundTrip, MixedSensorsMidTrialFromMemory) {
     Agent agent = trainedAgent(iotest::mixedDescriptor(), 410);  // 410: stops mid-trial
@@ -70,16 +62,7 @@ TEST(RoundTrip, DescriptorVariants) {
     bandit.numActions = 10;
     bandit.tauValue = 0.0f;
 
-    AgentDescriptor full = iotest::mixedDescriptor();
-    full.allocation = RbfAllocation::Full;
-    full.resolution = 5;
-    full.planning = true;
-    full.curiosity = CuriosityMode::Progress;
-    full.curiosityFactor = 0.25f;
-    full.maxPlanningSteps = 50;
-    full.planningAccumulatesUncertainty = false;
-    full.learnFromRealSteps = false;
-    full.discretePrediction = DiscretePrediction::Ordinal;
+    const AgentDescriptor full = iotest::plannerDescriptor();
 
     for (const AgentDescriptor& d : {discreteOnly, bandit, full}) {
         Agent agent = trainedAgent(d, 120);

@@ -21,6 +21,8 @@ namespace Verve.Tests
             { "SampleValues", a => a.SampleValues(ValueAxis.Discrete(0, 4), new[] { 0, 0 }, new[] { 0f, 0f }) },
             { "Save", a => a.Save("never-written.xml") },
             { "SaveToBytes", a => a.SaveToBytes() },
+            { "SaveBinary", a => a.SaveBinary("never-written.xml") },
+            { "SaveToBinaryBytes", a => a.SaveToBinaryBytes() },
         };
 
         [Theory]

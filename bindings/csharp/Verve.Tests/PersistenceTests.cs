@@ -51,6 +51,37 @@ namespace Verve.Tests
         }
 
         [Fact]
+        public void BinarySaveRoundTripGivesIdenticalActions()
+        {
+            using var original = Trained();
+            byte[] bytes = original.SaveToBinaryBytes();
+            Assert.Equal("VERVEBIN", Encoding.ASCII.GetString(bytes, 0, 8));
+            Assert.True(bytes.Length < original.SaveToBytes().Length);
+            string path = Path.Combine(_dir, "agent.bin");
+            original.SaveBinary(path);
+            Assert.Equal(bytes, File.ReadAllBytes(path));
+
+            using var fromBytes = Agent.LoadFromBytes(bytes);
+            using var fromFile = Agent.Load(path);
+            Assert.Equal(bytes, fromBytes.SaveToBinaryBytes());
+            Assert.Equal(original.SaveToBytes(), fromFile.SaveToBytes());
+            int[] expected = TestAgents.Run(original, 300, first: 300);
+            Assert.Equal(expected, TestAgents.Run(fromBytes, 300, first: 300));
+            Assert.Equal(expected, TestAgents.Run(fromFile, 300, first: 300));
+        }
+
+        [Fact]
+        public void DamagedBinarySaveIsAFormatError()
+        {
+            using var agent = Trained();
+            byte[] bytes = agent.SaveToBinaryBytes();
+            bytes[bytes.Length / 2] ^= 1;
+            var e = Assert.Throws<VerveException>(() => Agent.LoadFromBytes(bytes));
+            Assert.Equal(ResultCode.Format, e.Code);
+            Assert.Contains("checksum", e.Message);
+        }
+
+        [Fact]
         public void FileAndBytesHoldTheSameSave()
         {
             using var agent = Trained();

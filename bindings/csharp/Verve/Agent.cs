@@ -235,14 +235,21 @@ namespace Verve
 
         /// <summary>Saves the agent as XML to <paramref name="path"/>, atomically: the previous file
         /// survives a crash mid-save.</summary>
-        public unsafe void Save(string path)
+        public void Save(string path) => SaveFile(path, binary: false);
+
+        /// <summary>As <see cref="Save(string)"/>, in the compact binary format: about half the size,
+        /// and faster to save and to load. <see cref="Load(string)"/> reads both.</summary>
+        public void SaveBinary(string path) => SaveFile(path, binary: true);
+
+        private unsafe void SaveFile(string path, bool binary)
         {
             AgentHandle handle = Handle;
             fixed (byte* p = NulTerminatedUtf8(path))
-                VerveException.ThrowIfFailed(NativeMethods.verve_agent_save(handle, p));
+                VerveException.ThrowIfFailed(binary ? NativeMethods.verve_agent_save_binary(handle, p)
+                                                    : NativeMethods.verve_agent_save(handle, p));
         }
 
-        /// <summary>Loads an agent saved by <see cref="Save(string)"/>.</summary>
+        /// <summary>Loads an agent saved by <see cref="Save(string)"/> or <see cref="SaveBinary(string)"/>.</summary>
         /// <exception cref="VerveException"><see cref="ResultCode.Io"/>, <see cref="ResultCode.Format"/> or <see cref="ResultCode.Version"/>.</exception>
         public static unsafe Agent Load(string path)
         {
@@ -254,23 +261,30 @@ namespace Verve
         }
 
         /// <summary>The agent's save (the same XML as <see cref="Save(string)"/>) as bytes.</summary>
-        public unsafe byte[] SaveToBytes()
+        public byte[] SaveToBytes() => SaveMemory(binary: false);
+
+        /// <summary>The agent's binary save (the same bytes as <see cref="SaveBinary(string)"/>).</summary>
+        public byte[] SaveToBinaryBytes() => SaveMemory(binary: true);
+
+        private unsafe byte[] SaveMemory(bool binary)
         {
             AgentHandle handle = Handle;
             var size = UIntPtr.Zero;
-            VerveException.ThrowIfFailed(NativeMethods.verve_agent_save_memory(handle, null, ref size));
+            VerveException.ThrowIfFailed(binary ? NativeMethods.verve_agent_save_memory_binary(handle, null, ref size)
+                                                : NativeMethods.verve_agent_save_memory(handle, null, ref size));
             var bytes = new byte[checked((int)size.ToUInt64())];
             fixed (byte* b = bytes)
-                VerveException.ThrowIfFailed(NativeMethods.verve_agent_save_memory(handle, b, ref size));
+                VerveException.ThrowIfFailed(binary ? NativeMethods.verve_agent_save_memory_binary(handle, b, ref size)
+                                                    : NativeMethods.verve_agent_save_memory(handle, b, ref size));
             if (size.ToUInt64() != (ulong)bytes.Length) Array.Resize(ref bytes, (int)size.ToUInt64());
             return bytes;
         }
 
-        /// <summary>Loads an agent from bytes made by <see cref="SaveToBytes"/>.</summary>
+        /// <summary>Loads an agent from bytes made by <see cref="SaveToBytes"/> or <see cref="SaveToBinaryBytes"/>.</summary>
         public static Agent LoadFromBytes(byte[] data) =>
             LoadFromBytes(new ReadOnlySpan<byte>(data ?? throw new ArgumentNullException(nameof(data))));
 
-        /// <summary>Loads an agent from bytes made by <see cref="SaveToBytes"/>.</summary>
+        /// <summary>Loads an agent from bytes made by <see cref="SaveToBytes"/> or <see cref="SaveToBinaryBytes"/>.</summary>
         /// <exception cref="VerveException"><see cref="ResultCode.Format"/> when the bytes are corrupt or truncated.</exception>
         public static unsafe Agent LoadFromBytes(ReadOnlySpan<byte> data)
         {

@@ -174,6 +174,24 @@ static class MonoHost
             Require(Expect<VerveException>(() => Agent.Load(path)).Code == ResultCode.Io, "a missing file is not an Io error");
         });
 
+        Check("Agent.SaveToBinaryBytes(); Agent.SaveBinary(String)", () =>
+        {
+            byte[] bytes = s_agent.SaveToBinaryBytes();
+            Require(bytes.Length < s_save.Length, "the binary save is not smaller than the XML");
+            string path = Path.Combine(Path.GetTempPath(), "verve-mono-host-" + Guid.NewGuid().ToString("N") + ".bin");
+            try
+            {
+                s_agent.SaveBinary(path);
+                Require(File.ReadAllBytes(path).SequenceEqual(bytes), "the binary file and bytes differ");
+                using (Agent loaded = Agent.Load(path))
+                using (Agent fromBytes = Agent.LoadFromBytes(bytes))
+                {
+                    RequireSameActions(loaded, fromBytes);
+                }
+            }
+            finally { File.Delete(path); }
+        });
+
         Check("VerveException..ctor(ResultCode, String); VerveException.get_Code()", () =>
         {
             var mine = new VerveException(ResultCode.Internal, "message");

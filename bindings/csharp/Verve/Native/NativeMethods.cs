@@ -103,6 +103,12 @@ namespace Verve.Native
         [DllImport(Library, CallingConvention = CallingConvention.Cdecl)]
         internal static extern ResultCode verve_agent_load_memory(byte* data, UIntPtr size, out IntPtr agent);
 
+        [DllImport(Library, CallingConvention = CallingConvention.Cdecl)]
+        internal static extern ResultCode verve_agent_save_binary(AgentHandle agent, byte* path);
+
+        [DllImport(Library, CallingConvention = CallingConvention.Cdecl)]
+        internal static extern ResultCode verve_agent_save_memory_binary(AgentHandle agent, byte* buffer, ref UIntPtr size);
+
         // One brain, many bodies.
         [DllImport(Library, CallingConvention = CallingConvention.Cdecl)]
         internal static extern ResultCode verve_brain_create(verve_agent_desc* desc, out IntPtr brain);

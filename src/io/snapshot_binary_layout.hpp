@@ -1,0 +1,66 @@
+// The binary payload's layout, written once: transferPayload walks AgentSnapshot's fields in
+// order through a writer (snapshot_binary_write.cpp) or a reader (snapshot_binary_read.cpp), so
+// the two can never disagree. An Io provides:
+//   value(name, T&)          one integer or float
+//   flag(name, bool&)        one byte, 0 or 1
+//   choice(name, Enum&, max) one byte, 0..max
+//   list(name, vector<T>&)   u64 count, then the items
+//   items(name, vector<T>&, itemBytes, f)  u64 count, then f(io, item) for each item
+#pragma once
+#include "verve/agent_snapshot.hpp"
+
+namespace verve::io {
+
+template <typename Io, typename Descriptor>
+void transferDescriptor(Io& io, Descriptor& d) {
+    io.value("resolution", d.resolution);
+    io.value("actions", d.numActions);
+    io.choice("allocation", d.allocation, RbfAllocation::Full);
+    io.value("tau_value", d.tauValue);
+    io.value("tau_discount", d.tauDiscount);
+    io.value("tau_eligibility", d.tauEligibility);
+    io.value("policy_multiplier", d.policyMultiplier);
+    io.value("trace_threshold", d.traceThreshold);
+    io.value("seed", d.seed);
+    io.flag("planning", d.planning);
+    io.value("tau_model", d.tauModel);
+    io.value("max_planning_steps", d.maxPlanningSteps);
+    io.value("planning_uncertainty_threshold", d.planningUncertaintyThreshold);
+    io.choice("curiosity", d.curiosity, CuriosityMode::Progress);
+    io.value("curiosity_factor", d.curiosityFactor);
+    io.flag("planning_accumulates_uncertainty", d.planningAccumulatesUncertainty);
+    io.flag("learn_from_real_steps", d.learnFromRealSteps);
+    io.choice("discrete_prediction", d.discretePrediction, DiscretePrediction::Ordinal);
+    io.value("max_rbfs", d.maxRbfs);
+    io.list("discrete_sensors", d.discreteSensors);
+    io.items("continuous_sensors", d.continuousSensors, 1, [](Io& in, auto& sensor) { in.flag("circular", sensor.circular); });
+}
+
+// `shortTerm`: whether the traces and the previous step follow (SaveOptions::includeTraces).
+template <typename Io, typename Snapshot, typename Flag>
+void transferPayload(Io& io, Snapshot& s, Flag& shortTerm) {
+    transferDescriptor(io, s.descriptor);
+    io.flag("learning", s.learning);
+    io.value("steps", s.steps);
+    io.value("model_error", s.modelError);
+    io.value("last_dt", s.lastDt);
+    for (auto& word : s.rng) io.value("rng", word);
+    io.list("feature_keys", s.featureKeys);
+    io.list("centres", s.centres);
+    io.value("stride", s.stride);
+    io.list("weights", s.weights);
+    io.flag("short_term_memory", shortTerm);
+    if (!shortTerm) return;
+    io.value("trace_stride", s.traceStride);
+    io.list("trace_features", s.traceFeatures);
+    io.list("traces", s.traces);
+    io.flag("has_previous", s.hasPrevious);
+    if (!s.hasPrevious) return;
+    io.value("previous_action", s.previousAction);
+    io.list("previous_features", s.previousFeatures);
+    io.list("previous_activations", s.previousActivations);
+    io.list("previous_discrete", s.previousDiscrete);
+    io.list("previous_continuous", s.previousContinuous);
+}
+
+}  // namespace verve::io

@@ -1,0 +1,198 @@
+// The compact binary save: exact round trips, and every truncation, bit flip and hostile count
+// refused with a clear error (the same guarantees as the XML save).
+#include <gtest/gtest.h>
+
+#include <atomic>
+#include <cstdlib>
+#include <cstring>
+#include <filesystem>
+#include <new>
+
+#include "io/snapshot_binary.hpp"
+#include "io_test_support.hpp"
+#include "verve/io.hpp"
+
+// Records the largest single allocation, so a test can show that a hostile count allocates nothing
+// big. Replacing the global operator new is per program: this binary only.
+namespace {
+std::atomic<std::size_t> g_largestAllocation{0};
+}  // namespace
+
+void* operator new(std::size_t size) {
+    std::size_t seen = g_largestAllocation.load(std::memory_order_relaxed);
+    while (size > seen && !g_largestAllocation.compare_exchange_weak(seen, size, std::memory_order_relaxed)) {
+    }
+    if (void* p = std::malloc(size == 0 ? 1 : size)) return p;
+    throw std::bad_alloc();
+}
+void operator delete(void* p) noexcept { std::free(p); }
+void operator delete(void* p, std::size_t) noexcept { std::free(p); }
+
+namespace verve {
+namespace {
+
+using iotest::expectSameFuture;
+using iotest::expectSameSnapshot;
+using iotest::trainedAgent;
+
+const SaveOptions kBinary{true, SaveFormat::Binary};
+
+std::string binarySave(const Agent& agent) { return saveAgentToString(agent, kBinary); }
+
+
+// Loading must throw a Format error (or Version, when `versionToo`) with a message.
+void expectRefused(const std::string& data, const std::string& what, bool versionToo = false) {
+    try {
+        loadAgentFromMemory(data.data(), data.size());
+        ADD_FAILURE() << what << " loaded";
+    } catch (const Error& e) {
+        if (!(versionToo && e.code() == ErrorCode::Version)) {
+            EXPECT_EQ(e.code(), ErrorCode::Format) << what << ": " << e.what();
+        }
+        EXPECT_GT(std::string(e.what()).size(), 20u) << what;
+    }
+}
+
+TEST(BinarySave, RoundTripIsExactForEveryKindOfAgent) {
+    AgentDescriptor discreteOnly;
+    discreteOnly.addDiscreteSensor(20).addDiscreteSensor(2);
+    discreteOnly.numActions = 5;
+    discreteOnly.seed = 0xFFFFFFFFFFFFFFFFULL;
+    AgentDescriptor bandit;  // no sensors: one state
+    bandit.numActions = 10;
+    for (const AgentDescriptor& d : {iotest::mixedDescriptor(), discreteOnly, bandit, iotest::plannerDescriptor()}) {
+        Agent agent = trainedAgent(d, 410);  // 410: stops mid-trial, with traces and a previous step
+        const std::string bytes = binarySave(agent);
+        Agent loaded = loadAgentFromMemory(bytes.data(), bytes.size());
+        expectSameSnapshot(agent.snapshot(), loaded.snapshot());
+        EXPECT_EQ(binarySave(loaded), bytes);  // the same bytes when saved again
+        // Binary and XML hold the same agent.
+        const std::string xml = saveAgentToString(agent);
+        expectSameSnapshot(loadAgentFromMemory(xml.data(), xml.size()).snapshot(), loaded.snapshot());
+        expectSameFuture(agent, loaded);
+    }
+}
+
+TEST(BinarySave, IsSmallerThanXmlAndStartsWithItsMagic) {
+    Agent agent = trainedAgent(iotest::mixedDescriptor(), 410);
+    const std::string bytes = binarySave(agent);
+    EXPECT_EQ(bytes.compare(0, 8, "VERVEBIN"), 0);
+    EXPECT_LT(bytes.size() * 2, saveAgentToString(agent).size());
+}
+
+TEST(BinarySave, WithoutTracesTheLoadedAgentStartsAFreshTrial) {
+    Agent agent = trainedAgent(iotest::mixedDescriptor(), 410);
+    const std::string bytes = saveAgentToString(agent, SaveOptions{false, SaveFormat::Binary});
+    Agent loaded = loadAgentFromMemory(bytes.data(), bytes.size());
+    EXPECT_FALSE(loaded.snapshot().hasPrevious);
+    EXPECT_TRUE(loaded.snapshot().traceFeatures.empty());
+    agent.resetShortTermMemory();
+    expectSameFuture(agent, loaded);
+}
+
+TEST(BinarySave, ThroughAFileLoadRecognisesTheFormat) {
+    const auto path = std::filesystem::temp_directory_path() / "verve_binary_save_test.bin";
+    Agent agent = trainedAgent(iotest::mixedDescriptor(11));
+    agent.setLearning(false);
+    saveAgent(agent, path.string(), kBinary);
+    Agent loaded = loadAgent(path.string());
+    std::filesystem::remove(path);
+    EXPECT_FALSE(loaded.learning());
+    expectSameSnapshot(agent.snapshot(), loaded.snapshot());
+}
+
+class CorruptBinarySave : public ::testing::Test {
+protected:
+    void SetUp() override { bytes_ = binarySave(trainedAgent(iotest::mixedDescriptor(), 410)); }
+
+    // The save with the u64 at payload offset `at` replaced and the checksum made valid again:
+    // what a hostile writer (not random damage) can produce.
+    std::string withCount(std::size_t at, std::uint64_t value) const {
+        std::string s = bytes_;
+        std::memcpy(&s[io::kBinaryHeaderBytes + at], &value, 8);
+        const std::uint64_t sum = io::payloadChecksum(s.data() + io::kBinaryHeaderBytes, s.size() - io::kBinaryHeaderBytes);
+        std::memcpy(&s[24], &sum, 8);
+        return s;
+    }
+    std::uint64_t countAt(std::size_t at) const {
+        std::uint64_t v = 0;
+        std::memcpy(&v, bytes_.data() + io::kBinaryHeaderBytes + at, 8);
+        return v;
+    }
+
+    std::string bytes_;
+};
+
+TEST_F(CorruptBinarySave, EveryTruncationIsRefused) {
+    for (std::size_t cut = 1; cut < bytes_.size(); ++cut) {
+        expectRefused(bytes_.substr(0, cut), "a save cut at byte " + std::to_string(cut));
+    }
+    expectRefused(bytes_ + "x", "a save with a byte appended");
+}
+
+TEST_F(CorruptBinarySave, EverySingleBitFlipIsRefused) {
+    for (std::size_t bit = 0; bit < bytes_.size() * 8; ++bit) {
+        std::string s = bytes_;
+        s[bit / 8] = static_cast<char>(s[bit / 8] ^ (1 << (bit % 8)));
+        // A flip in the version field may read as a newer version: a Version error.
+        const bool inVersion = bit / 8 >= 8 && bit / 8 < 12;
+        expectRefused(s, "a flip of bit " + std::to_string(bit), inVersion);
+    }
+}
+
+TEST_F(CorruptBinarySave, FutureVersionIsAVersionError) {
+    std::string s = bytes_;
+    s[8] = 2;
+    try {
+        loadAgentFromMemory(s.data(), s.size());
+        ADD_FAILURE() << "a newer version loaded";
+    } catch (const Error& e) {
+        EXPECT_EQ(e.code(), ErrorCode::Version) << e.what();
+        EXPECT_NE(std::string(e.what()).find("version 2"), std::string::npos) << e.what();
+    }
+}
+
+TEST_F(CorruptBinarySave, ChecksumMismatchIsNamed) {
+    std::string s = bytes_;
+    s.back() = static_cast<char>(s.back() ^ 0x10);
+    try {
+        loadAgentFromMemory(s.data(), s.size());
+        ADD_FAILURE();
+    } catch (const Error& e) {
+        EXPECT_NE(std::string(e.what()).find("checksum"), std::string::npos) << e.what();
+    }
+}
+
+// The payload of the mixed agent (1 discrete, 2 continuous sensors): the descriptor's fixed part
+// is 66 bytes, then the discrete sensors' count and values, the continuous sensors' count and
+// flags, then the state's 49 bytes, then the feature keys' count.
+constexpr std::size_t kDiscreteCountAt = 66;
+constexpr std::size_t kFeatureCountAt = 66 + 8 + 4 + 8 + 2 + 49;
+
+TEST_F(CorruptBinarySave, HugeCountsAreRefusedWithoutAllocating) {
+    ASSERT_EQ(countAt(kDiscreteCountAt), 1u);  // the layout this test edits
+    ASSERT_EQ(countAt(kFeatureCountAt), trainedAgent(iotest::mixedDescriptor(), 410).rbfCount());
+    for (std::size_t at : {kDiscreteCountAt, kFeatureCountAt}) {
+        for (std::uint64_t count : {std::uint64_t{1} << 28, std::uint64_t{1} << 61, ~std::uint64_t{0}}) {
+            const std::string hostile = withCount(at, count);
+            g_largestAllocation = 0;
+            try {
+                loadAgentFromMemory(hostile.data(), hostile.size());
+                ADD_FAILURE() << "a count of " << count << " loaded";
+            } catch (const Error& e) {
+                EXPECT_EQ(e.code(), ErrorCode::Format);
+                EXPECT_NE(std::string(e.what()).find("declares"), std::string::npos) << e.what();
+            }
+            EXPECT_LT(g_largestAllocation.load(), bytes_.size() + 4096) << "count " << count;
+        }
+    }
+}
+
+TEST_F(CorruptBinarySave, AConsistentButWrongSaveGetsTheSameChecksAsXml) {
+    // One feature key fewer, checksum valid: the snapshot checks catch what the layout cannot.
+    const std::string s = withCount(kFeatureCountAt, countAt(kFeatureCountAt) - 1);
+    expectRefused(s, "a save whose lists disagree");
+}
+
+}  // namespace
+}  // namespace verve
