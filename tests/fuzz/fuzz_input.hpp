@@ -65,7 +65,7 @@ inline verve_agent_desc anyDescriptor(FuzzedDataProvider& in) {
     d.discrete_prediction = in.ConsumeIntegralInRange<uint32_t>(0, 2);
     // A host's RBF budget: modest, so that every accepted agent is quick to build and a slow input
     // means a real hang (now and then beyond the limit, which must be refused).
-    d.max_rbfs = in.ConsumeIntegralInRange<int>(0, 63) == 0 ? UINT64_MAX : in.ConsumeIntegralInRange<uint64_t>(1, 50000);
+    d.max_rbfs = in.ConsumeIntegralInRange<int>(0, 63) == 0 ? UINT64_MAX : in.ConsumeIntegralInRange<uint64_t>(1, 4000);
     return d;
 }
 
