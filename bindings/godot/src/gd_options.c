@@ -3,7 +3,7 @@
 #include <stddef.h>
 #include <string.h>
 
-typedef enum vg_kind { VG_UINT, VG_FLOAT, VG_SEED, VG_BOOL, VG_ENUM, VG_DISCRETE_SENSORS, VG_CIRCULAR } vg_kind;
+typedef enum vg_kind { VG_UINT, VG_FLOAT, VG_UINT64, VG_BOOL, VG_ENUM, VG_DISCRETE_SENSORS, VG_CIRCULAR } vg_kind;
 
 typedef struct vg_option {
     const char* name;
@@ -28,7 +28,7 @@ static const vg_option vg_options[] = {
     VG_OPTION("tau_eligibility", tau_eligibility, VG_FLOAT, NULL),
     VG_OPTION("policy_multiplier", policy_multiplier, VG_FLOAT, NULL),
     VG_OPTION("trace_threshold", trace_threshold, VG_FLOAT, NULL),
-    VG_OPTION("seed", seed, VG_SEED, NULL),
+    VG_OPTION("seed", seed, VG_UINT64, NULL),
     VG_OPTION("planning", planning, VG_BOOL, NULL),
     VG_OPTION("tau_model", tau_model, VG_FLOAT, NULL),
     VG_OPTION("max_planning_steps", max_planning_steps, VG_UINT, NULL),
@@ -38,6 +38,8 @@ static const vg_option vg_options[] = {
     VG_OPTION("planning_accumulates_uncertainty", planning_accumulates_uncertainty, VG_BOOL, NULL),
     VG_OPTION("learn_from_real_steps", learn_from_real_steps, VG_BOOL, NULL),
     VG_OPTION("discrete_prediction", discrete_prediction, VG_ENUM, vg_prediction_names),
+    VG_OPTION("max_rbfs", max_rbfs, VG_UINT64, NULL),
+    VG_OPTION("policy_weight_bound", policy_weight_bound, VG_FLOAT, NULL),
 };
 #define VG_OPTION_COUNT (sizeof vg_options / sizeof vg_options[0])
 
@@ -107,7 +109,7 @@ static int vg_read_option(vg_call* c, const vg_option* o, const godot_variant* v
             return vg_option_error(c, o, "a non-negative int", v);
         *(uint32_t*)p = (uint32_t)i;
         return 1;
-    case VG_SEED:
+    case VG_UINT64:
         if (t != GODOT_VARIANT_TYPE_INT || i < 0) return vg_option_error(c, o, "a non-negative int", v);
         *(uint64_t*)p = (uint64_t)i;
         return 1;
@@ -151,7 +153,7 @@ static godot_variant vg_option_variant(const vg_option* o, const verve_agent_des
     uint32_t i, n;
     switch (o->kind) {
     case VG_UINT: return vg_variant_int(*(const uint32_t*)p);
-    case VG_SEED: return vg_variant_int((int64_t)*(const uint64_t*)p);
+    case VG_UINT64: return vg_variant_int((int64_t)*(const uint64_t*)p);
     case VG_FLOAT: return vg_variant_real(*(const float*)p);
     case VG_BOOL: return vg_variant_bool(*(const uint32_t*)p != 0);
     case VG_ENUM: {

@@ -139,6 +139,16 @@ VG_METHOD(end_episode) {
                            vg_check(&c, verve_agent_end_episode(a, reward)));
 }
 
+VG_METHOD(truncate_episode) {
+    vg_call c;
+    verve_agent* a;
+    float reward = 0.0f;
+    VG_UNUSED;
+    return vg_variant_bool(vg_begin(&c, user_data, "truncate_episode", argc, argv, 1, 1) && vg_agent_handle(&c, &a) &&
+                           vg_arg_float(&c, 0, "reward", &reward) &&
+                           vg_check(&c, verve_agent_truncate_episode(a, reward)));
+}
+
 VG_METHOD(reset_short_term_memory) {
     vg_call c;
     verve_agent* a;

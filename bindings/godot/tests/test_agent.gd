@@ -116,8 +116,14 @@ func test_episode_learning_readouts():
 	var a = new_agent()
 	drive(a, 20)
 	check(a.end_episode(1.0), "end_episode")
+	drive(a, 5)
+	check(a.truncate_episode(-0.5), "truncate_episode")
 	check(a.reset_short_term_memory(), "reset_short_term_memory")
 	check_error(a, a.end_episode("win"), false, "final_reward must be a number", "a String final reward")
+	check_error(a, a.truncate_episode("late"), false, "reward must be a number", "a String truncation reward")
+	var budget = new_agent({"actions": 2, "max_rbfs": 5, "policy_weight_bound": 4.0})
+	check(budget.get_options()["max_rbfs"] == 5 and budget.get_options()["policy_weight_bound"] == 4.0,
+		"max_rbfs and policy_weight_bound reach the agent")
 	check(a.learning == true, "learning by default")
 	a.learning = false
 	check(a.learning == false, "learning can be switched off")
