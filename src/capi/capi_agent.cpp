@@ -2,11 +2,13 @@
 
 namespace verve::capi {
 
-bool tryAcquire(const verve_agent& handle) noexcept {
+bool tryAcquire(std::atomic<bool>& flag) noexcept {
     // Acquire pairs with the release in ~AgentUse: a call on another thread sees everything the
     // previous call wrote, as the host's own hand-over between threads would give.
-    return !handle.inUse.exchange(true, std::memory_order_acquire);
+    return !flag.exchange(true, std::memory_order_acquire);
 }
+
+bool tryAcquire(const verve_agent& handle) noexcept { return tryAcquire(handle.inUse); }
 
 void refuseInUse() {
     throw Error(ErrorCode::InvalidState,

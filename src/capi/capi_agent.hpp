@@ -2,6 +2,7 @@
 // it at once, and the save of the latest size query.
 #pragma once
 #include <atomic>
+#include <memory>
 #include <cstdint>
 #include <string>
 #include <type_traits>
@@ -68,6 +69,9 @@ struct verve_agent {
     // Set for the duration of every call on this agent. Mutable: read-only calls take it too,
     // because they share the agent's scratch memory (one atomic exchange per call).
     mutable std::atomic<bool> inUse{false};
+    // A body's brain: the flag its brain and all the brain's bodies share, since they share weights
+    // (one brain and its bodies count as one agent). Null for an agent of its own.
+    std::shared_ptr<std::atomic<bool>> brainInUse;
 
 private:
     verve::Agent agent_;
@@ -82,6 +86,7 @@ namespace verve::capi {
 
 // Takes the in-use flag of a handle, or throws Error(InvalidState) when another call holds it.
 bool tryAcquire(const verve_agent& handle) noexcept;
+bool tryAcquire(std::atomic<bool>& flag) noexcept;
 [[noreturn]] void refuseInUse();
 
 // One call's exclusive use of an agent: a second thread arriving while it lasts is refused with
@@ -93,8 +98,15 @@ public:
     explicit AgentUse(Handle* handle) : handle_(handle) {
         requireArg(handle, "agent");
         if (!tryAcquire(*handle)) refuseInUse();
+        if (handle->brainInUse != nullptr && !tryAcquire(*handle->brainInUse)) {
+            handle->inUse.store(false, std::memory_order_release);
+            refuseInUse();
+        }
     }
-    ~AgentUse() { handle_->inUse.store(false, std::memory_order_release); }
+    ~AgentUse() {
+        if (handle_->brainInUse != nullptr) handle_->brainInUse->store(false, std::memory_order_release);
+        handle_->inUse.store(false, std::memory_order_release);
+    }
     AgentUse(const AgentUse&) = delete;
     AgentUse& operator=(const AgentUse&) = delete;
 

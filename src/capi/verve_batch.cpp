@@ -13,6 +13,7 @@ struct verve_batch {
     // Scratch reused from call to call: the agents behind the handles, the per-agent verdicts.
     std::vector<verve::Agent*> agents;
     std::vector<verve_agent*> held;  // the handles whose in-use flag this call holds
+    std::vector<std::atomic<bool>*> heldBrains;  // and the flags of their bodies' brains
     std::vector<int> results;
 };
 
@@ -85,15 +86,22 @@ VERVE_API verve_result VERVE_CALL verve_batch_update(verve_batch* batch, verve_a
         requireArg(out_actions, "out_actions");
         batch->agents.resize(n);
         batch->results.assign(n, 0);
-        // Every agent's in-use flag is held for the whole call, as a single call holds it; an agent
-        // listed twice is taken once (looked up only when its flag is already held).
+        // Room first: a flag once taken is always recorded, so it is always given back.
+        batch->held.reserve(n);
+        batch->heldBrains.reserve(n);
+        // Every agent's in-use flag, and the flag of each body's brain, is held for the whole call,
+        // as a single call holds them; an agent or brain listed twice is taken once (looked up
+        // only when its flag is already held).
         struct Release {
             std::vector<verve_agent*>& held;
+            std::vector<std::atomic<bool>*>& heldBrains;
             ~Release() {
                 for (verve_agent* h : held) h->inUse.store(false, std::memory_order_release);
+                for (std::atomic<bool>* b : heldBrains) b->store(false, std::memory_order_release);
                 held.clear();
+                heldBrains.clear();
             }
-        } release{batch->held};
+        } release{batch->held, batch->heldBrains};
         for (uint32_t i = 0; i < n; ++i) {
             verve_agent* h = agents[i];
             batch->agents[i] = nullptr;
@@ -102,6 +110,13 @@ VERVE_API verve_result VERVE_CALL verve_batch_update(verve_batch* batch, verve_a
                 batch->held.push_back(h);
             } else if (std::find(agents, agents + i, h) == agents + i) {
                 verve::capi::refuseInUse();
+            }
+            if (std::atomic<bool>* brain = h->brainInUse.get()) {
+                if (verve::capi::tryAcquire(*brain)) {
+                    batch->heldBrains.push_back(brain);
+                } else if (std::find(batch->heldBrains.begin(), batch->heldBrains.end(), brain) == batch->heldBrains.end()) {
+                    verve::capi::refuseInUse();
+                }
             }
             // Through mutableAgent: an update drops the saves that verve_agent_save_memory keeps.
             batch->agents[i] = &h->mutableAgent();

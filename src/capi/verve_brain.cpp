@@ -1,4 +1,6 @@
 // One brain, many bodies: a shared learner and the agents (bodies) that step through it.
+#include <atomic>
+#include <memory>
 #include <string>
 #include <utility>
 
@@ -11,6 +13,9 @@
 struct verve_brain {
     explicit verve_brain(verve::Brain&& b) : brain(std::move(b)) {}
     verve::Brain brain;
+    // Shared with every body (verve_agent::brainInUse): a call on the brain or on any of its bodies
+    // holds it, so two threads never touch the shared weights at once.
+    std::shared_ptr<std::atomic<bool>> inUse = std::make_shared<std::atomic<bool>>(false);
 };
 
 namespace {
@@ -18,15 +23,20 @@ namespace {
 using verve::capi::guarded;
 using verve::capi::requireArg;
 
-verve::Brain& brainOf(verve_brain* handle) {
-    requireArg(handle, "brain");
-    return handle->brain;
-}
+// One call's exclusive use of a brain and its bodies (see AgentUse).
+class BrainUse {
+public:
+    explicit BrainUse(const verve_brain* handle) : handle_(handle) {
+        requireArg(handle, "brain");
+        if (!verve::capi::tryAcquire(*handle->inUse)) verve::capi::refuseInUse();
+    }
+    ~BrainUse() { handle_->inUse->store(false, std::memory_order_release); }
+    BrainUse(const BrainUse&) = delete;
+    BrainUse& operator=(const BrainUse&) = delete;
 
-const verve::Brain& brainOf(const verve_brain* handle) {
-    requireArg(handle, "brain");
-    return handle->brain;
-}
+private:
+    const verve_brain* handle_;
+};
 
 void handOutBrain(verve::Brain&& brain, verve_brain** out) { *out = new verve_brain(std::move(brain)); }
 
@@ -46,15 +56,18 @@ VERVE_API void VERVE_CALL verve_brain_destroy(verve_brain* brain) { delete brain
 
 VERVE_API verve_result VERVE_CALL verve_brain_create_body(verve_brain* brain, verve_agent** out_body) {
     return guarded(__func__, [&] {
-        verve::Brain& b = brainOf(brain);
+        const BrainUse use(brain);
         requireArg(out_body, "out_body");
-        verve::capi::handOut(b.makeBody(), out_body);
+        auto body = std::make_unique<verve_agent>(brain->brain.makeBody());
+        body->brainInUse = brain->inUse;
+        *out_body = body.release();
     });
 }
 
 VERVE_API verve_result VERVE_CALL verve_brain_get_rbf_count(const verve_brain* brain, uint32_t* out_count) {
     return guarded(__func__, [&] {
-        const verve::Brain& b = brainOf(brain);
+        const BrainUse use(brain);
+        const verve::Brain& b = brain->brain;
         requireArg(out_count, "out_count");
         *out_count = static_cast<uint32_t>(b.rbfCount());
     });
@@ -62,7 +75,8 @@ VERVE_API verve_result VERVE_CALL verve_brain_get_rbf_count(const verve_brain* b
 
 VERVE_API verve_result VERVE_CALL verve_brain_save(const verve_brain* brain, const char* path) {
     return guarded(__func__, [&] {
-        const verve::Brain& b = brainOf(brain);
+        const BrainUse use(brain);
+        const verve::Brain& b = brain->brain;
         requireArg(path, "path");
         verve::saveBrain(b, path);
     });
@@ -78,7 +92,8 @@ VERVE_API verve_result VERVE_CALL verve_brain_load(const char* path, verve_brain
 
 VERVE_API verve_result VERVE_CALL verve_brain_save_memory(const verve_brain* brain, void* buffer, size_t* size) {
     return guarded(__func__, [&] {
-        const verve::Brain& b = brainOf(brain);
+        const BrainUse use(brain);
+        const verve::Brain& b = brain->brain;
         requireArg(size, "size");
         verve::capi::copyOut(verve::saveBrainToString(b), buffer, *size);
     });

@@ -142,5 +142,44 @@ TEST_F(Hooks, ACallOverlappingAnotherOnTheSameAgentIsRefused) {
     verve_agent_destroy(intruder.agent);
 }
 
+// Bodies of one brain share its weights: while one body is in a call, its brain and every other
+// body of it are in use too, and a call on them from another thread is refused.
+struct BrainIntruder {
+    verve_brain* brain = nullptr;
+    verve_agent* otherBody = nullptr;
+    verve_result bodyResult = VERVE_OK;
+    verve_result brainResult = VERVE_OK;
+    static void VERVE_CALL during(void* user, verve_log_level, const char*) {
+        auto* self = static_cast<BrainIntruder*>(user);
+        std::thread other([self] {
+            float v = 0.0f;
+            uint32_t count = 0;
+            self->bodyResult = verve_agent_get_value(self->otherBody, &v);
+            self->brainResult = verve_brain_get_rbf_count(self->brain, &count);
+        });
+        other.join();
+    }
+};
+
+TEST_F(Hooks, ACallOnAnotherBodyOfTheSameBrainIsRefused) {
+    BrainIntruder intruder;
+    install(&BrainIntruder::during, &intruder);
+    const verve_agent_desc d = mixedDesc(false);
+    ASSERT_EQ(verve_brain_create(&d, &intruder.brain), VERVE_OK) << lastError();
+    verve_agent* body = nullptr;
+    ASSERT_EQ(verve_brain_create_body(intruder.brain, &body), VERVE_OK) << lastError();
+    ASSERT_EQ(verve_brain_create_body(intruder.brain, &intruder.otherBody), VERVE_OK) << lastError();
+    ASSERT_EQ(lap(body, 0, 5.0f), VERVE_OK);  // the clamp warning fires inside the update
+    EXPECT_EQ(intruder.bodyResult, VERVE_ERROR_INVALID_STATE);
+    EXPECT_EQ(intruder.brainResult, VERVE_ERROR_INVALID_STATE);
+    float v = 0.0f;
+    EXPECT_EQ(verve_agent_get_value(intruder.otherBody, &v), VERVE_OK);  // free again afterwards
+    uint32_t count = 0;
+    EXPECT_EQ(verve_brain_get_rbf_count(intruder.brain, &count), VERVE_OK);
+    verve_agent_destroy(intruder.otherBody);
+    verve_agent_destroy(body);
+    verve_brain_destroy(intruder.brain);
+}
+
 }  // namespace
 }  // namespace verve::hardening
