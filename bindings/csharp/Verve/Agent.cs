@@ -72,9 +72,9 @@ namespace Verve
         {
             AgentHandle handle = Handle;
             uint action;
-            fixed (int* d = discrete)
-            fixed (float* c = continuous)
-            fixed (byte* m = allowed)
+            fixed (int* d = &MemoryMarshal.GetReference(discrete))
+            fixed (float* c = &MemoryMarshal.GetReference(continuous))
+            fixed (byte* m = &MemoryMarshal.GetReference(allowed))
             {
                 VerveException.ThrowIfFailed(NativeMethods.verve_agent_update_masked(handle, reward,
                     d, (uint)discrete.Length, c, (uint)continuous.Length, dt, m, (uint)allowed.Length, out action));

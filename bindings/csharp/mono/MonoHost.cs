@@ -122,6 +122,29 @@ static class MonoHost
             s_agent.Learning = true;
         });
 
+        Check("Agent.Update(Single, ReadOnlySpan<Int32>, ReadOnlySpan<Single>, Single, ReadOnlySpan<Byte>); " +
+              "Agent.get_ActionProbabilities(); Agent.get_ActionSelection(); Agent.set_ActionSelection(ActionSelection); " +
+              "Agent.TruncateEpisode(Single); AgentOptions.set_PolicyWeightBound(Single); AgentOptions.get_PolicyWeightBound()", () =>
+        {
+            var options = new AgentOptions { Actions = 3, PolicyWeightBound = 4f }.AddContinuousSensor(false);
+            using (var agent = new Agent(options))
+            {
+                Require(agent.Options.PolicyWeightBound == 4f, "PolicyWeightBound did not reach the agent");
+                ReadOnlySpan<byte> onlyFirst = new byte[] { 1, 0, 0 };
+                for (int i = 0; i < 20; ++i)
+                {
+                    int action = agent.Update(0.1f, ReadOnlySpan<int>.Empty, new[] { 0.05f * i }, 0.1f, onlyFirst);
+                    Require(action == 0, "a masked action was chosen: " + action);
+                }
+                float[] p = agent.ActionProbabilities;
+                Require(p.Length == 3 && p[0] == 1f && p[1] == 0f && p[2] == 0f, "probabilities under the mask: " + string.Join(",", p));
+                Require(agent.ActionSelection == ActionSelection.Sample, "sampling is not the default");
+                agent.ActionSelection = ActionSelection.Greedy;
+                Require(agent.ActionSelection == ActionSelection.Greedy, "ActionSelection = Greedy ignored");
+                agent.TruncateEpisode(-0.5f);
+            }
+        });
+
         Check("ValueAxis.Continuous(Int32, Int32); ValueAxis.Discrete(Int32, Int32); ValueAxis.get_Kind(); ValueAxis.get_Index(); " +
               "ValueAxis.get_Samples(); ValueAxis.Equals(ValueAxis); ValueAxis.Equals(Object); ValueAxis.GetHashCode(); ValueAxis.ToString()", () =>
         {
