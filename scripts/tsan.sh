@@ -14,6 +14,7 @@ suites=(
   "tests/hardening/verve_hardening_tests:*"
   "tests/hardening/verve_memory_tests:-AllocationFailure.*"
   "tests/capi/verve_capi_tests:*"
+  "tests/capi/verve_crowd_tests:*"        # the batch on its own pool and a host scheduler, shared brains
   "tests/core/verve_core_tests:*"
   "tests/io/verve_io_tests:-*Kill*"
 )
