@@ -14,19 +14,11 @@
 
 namespace verve::capi {
 
-// Counts changes to any agent while some handle holds a cached save, so that a cache is served
-// only when no agent at all changed since it was made: agents that share state (one brain, many
-// bodies) cannot make another handle's cache stale. Without caches, changes cost one load.
-struct SaveCacheClock {
-    static std::atomic<std::uint32_t>& caches() {
-        static std::atomic<std::uint32_t> n{0};
-        return n;
-    }
-    static std::atomic<std::uint64_t>& changes() {
-        static std::atomic<std::uint64_t> n{0};
-        return n;
-    }
-};
+// Counts the changes to an agent's learned state, so that a kept save is served only while it is
+// current. Shared by a brain and all its bodies, since a body's save holds the shared weights.
+// Only the holder of the in-use flag changes it (AgentUse), so relaxed order suffices.
+using ChangeCounter = std::shared_ptr<std::atomic<std::uint64_t>>;
+inline ChangeCounter newChangeCounter() { return std::make_shared<std::atomic<std::uint64_t>>(0); }
 
 }  // namespace verve::capi
 
@@ -37,31 +29,28 @@ struct verve_agent {
     verve_agent& operator=(const verve_agent&) = delete;
 
     const verve::Agent& agent() const { return agent_; }
-    // Every change goes through here (agent_ is private): it drops every cached save.
+    // Every change goes through here (agent_ is private): it makes the kept save stale.
     verve::Agent& mutableAgent() {
-        if (verve::capi::SaveCacheClock::caches().load(std::memory_order_relaxed) != 0) {
-            verve::capi::SaveCacheClock::changes().fetch_add(1, std::memory_order_relaxed);
-        }
+        changes_->fetch_add(1, std::memory_order_relaxed);
         return agent_;
     }
+    // A brain's body counts its changes with the brain (and so with every other body).
+    void shareChangesWith(verve::capi::ChangeCounter brainChanges) { changes_ = std::move(brainChanges); }
 
     // verve_agent_save_memory's (and _binary's) two calls: the size query keeps the bytes it made,
-    // and the call with a buffer in the same format copies them if no agent changed in between,
-    // instead of serialising again.
-    void keepSave(std::string bytes, verve::SaveFormat format) const {
-        if (!hasSave_) verve::capi::SaveCacheClock::caches().fetch_add(1, std::memory_order_relaxed);
+    // and the call with a buffer in the same format copies them instead of serialising again, if
+    // the agent (or, for a body, its brain) did not change in between.
+    const std::string& keepSave(std::string bytes, verve::SaveFormat format) const {
         hasSave_ = true;
         save_ = std::move(bytes);
         saveFormat_ = format;
-        saveAt_ = verve::capi::SaveCacheClock::changes().load(std::memory_order_relaxed);
+        saveAt_ = changes_->load(std::memory_order_relaxed);
+        return save_;
     }
     const std::string* keptSave(verve::SaveFormat format) const {
-        return hasSave_ && saveFormat_ == format && saveAt_ == verve::capi::SaveCacheClock::changes().load(std::memory_order_relaxed)
-                   ? &save_
-                   : nullptr;
+        return hasSave_ && saveFormat_ == format && saveAt_ == changes_->load(std::memory_order_relaxed) ? &save_ : nullptr;
     }
     void dropSave() const {
-        if (hasSave_) verve::capi::SaveCacheClock::caches().fetch_sub(1, std::memory_order_relaxed);
         hasSave_ = false;
         std::string().swap(save_);
     }
@@ -75,6 +64,7 @@ struct verve_agent {
 
 private:
     verve::Agent agent_;
+    verve::capi::ChangeCounter changes_ = verve::capi::newChangeCounter();
     // Mutable: a save is a const call (one agent is used by one thread at a time).
     mutable bool hasSave_ = false;
     mutable std::string save_;

@@ -16,6 +16,8 @@ struct verve_brain {
     // Shared with every body (verve_agent::brainInUse): a call on the brain or on any of its bodies
     // holds it, so two threads never touch the shared weights at once.
     std::shared_ptr<std::atomic<bool>> inUse = std::make_shared<std::atomic<bool>>(false);
+    // Shared with every body: a change through one body makes every body's kept save stale.
+    verve::capi::ChangeCounter changes = verve::capi::newChangeCounter();
 };
 
 namespace {
@@ -60,6 +62,7 @@ VERVE_API verve_result VERVE_CALL verve_brain_create_body(verve_brain* brain, ve
         requireArg(out_body, "out_body");
         auto body = std::make_unique<verve_agent>(brain->brain.makeBody());
         body->brainInUse = brain->inUse;
+        body->shareChangesWith(brain->changes);
         *out_body = body.release();
     });
 }

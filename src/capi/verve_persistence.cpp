@@ -33,10 +33,7 @@ void saveToMemory(const verve_agent* agent, void* buffer, size_t* size, verve::S
     requireArg(size, "size");
     // Serialised once for both calls: the size query keeps its bytes for the call with a buffer.
     const std::string* kept = agent->keptSave(format);
-    if (kept == nullptr) {
-        agent->keepSave(verve::saveAgentToString(a, inFormat(format)), format);
-        kept = agent->keptSave(format);
-    }
+    if (kept == nullptr) kept = &agent->keepSave(verve::saveAgentToString(a, inFormat(format)), format);
     verve::capi::copyOut(*kept, buffer, *size);
     if (buffer != nullptr) agent->dropSave();  // delivered: free the copy
 }

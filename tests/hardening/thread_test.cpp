@@ -9,6 +9,8 @@
 #include <thread>
 #include <vector>
 
+#include <unistd.h>
+
 #include "hardening_support.hpp"
 
 namespace verve::hardening {
@@ -30,7 +32,8 @@ TEST(Threads, SeparateAgentsOnManyThreadsAreIndependent) {
             verve_agent* agent = nullptr;
             const verve_agent_desc d = mixedDesc(t % 2 == 1, 100 + t);
             if (verve_agent_create(&d, &agent) != VERVE_OK) return void(fail = verve_last_error());
-            const std::string path = ::testing::TempDir() + "/verve_thread_" + std::to_string(t) + ".xml";
+            const std::string path = ::testing::TempDir() + "/verve_thread_" + std::to_string(::getpid()) + "_" +
+                                     std::to_string(t) + ".xml";
             for (int round = 0; round < 3 && fail.empty(); ++round) {
                 uint32_t action = 0;
                 for (int i = 0; i < 150; ++i) {
@@ -65,6 +68,36 @@ TEST(Threads, SeparateAgentsOnManyThreadsAreIndependent) {
     }
     for (auto& th : threads) th.join();
     for (int t = 0; t < kThreads; ++t) EXPECT_EQ(failures[t], "") << "thread " << t;
+}
+
+// A memory save's two calls on one agent while another thread keeps changing another agent: each
+// agent's kept save goes stale only with its own changes (a global change count once made the
+// size query's own kept copy vanish mid-call).
+TEST(Threads, MemorySavesIgnoreOtherAgentsChanges) {
+    verve_agent* saved = createOrFail(mixedDesc(false, 11));
+    verve_agent* busy = createOrFail(mixedDesc(true, 12));
+    uint32_t action = 0;
+    for (int i = 0; i < 50; ++i) ASSERT_EQ(step(saved, i, &action), VERVE_OK);
+    std::atomic<bool> stop{false};
+    std::thread changer([&] {
+        uint32_t own = 0;
+        for (int i = 0; !stop.load(); ++i) step(busy, i, &own);
+    });
+    std::string failure;
+    std::string first;
+    for (int round = 0; round < 300 && failure.empty(); ++round) {
+        size_t size = 0;
+        if (verve_agent_save_memory(saved, nullptr, &size) != VERVE_OK) failure = lastError();
+        std::string bytes(size, '\0');
+        if (failure.empty() && verve_agent_save_memory(saved, &bytes[0], &size) != VERVE_OK) failure = lastError();
+        if (first.empty()) first = bytes;
+        if (failure.empty() && bytes != first) failure = "the unchanged agent's save changed in round " + std::to_string(round);
+    }
+    stop = true;
+    changer.join();
+    EXPECT_EQ(failure, "");
+    verve_agent_destroy(busy);
+    verve_agent_destroy(saved);
 }
 
 // Two threads hammer one agent: every call either runs alone or is refused, so the steps the
