@@ -85,10 +85,17 @@ void PredictiveModel::rawOutputs(const WeightTable& w, const std::vector<ActiveF
                                  std::uint32_t action) const {
     std::fill(outputs_.begin(), outputs_.end(), 0.0f);
     const std::uint32_t offset = base_ + action * block_;
+    float total = 0.0f, trained = 0.0f;
     for (const auto& f : phi) {
         const float* row = w.row(f.index) + offset;
         for (std::uint32_t j = 0; j < block_; ++j) outputs_[j] += row[j] * f.activation;
+        total += f.activation;
+        if (row[certainty_] != 0.0f) trained += f.activation;
     }
+    // A feature this action never trained (its certainty weight is still exactly 0) knows nothing:
+    // the certainty counts only the share of the state that trained ones cover, so the confident
+    // neighbours of a new state do not make it look known.
+    if (total > 0.0f) outputs_[certainty_] *= trained / total;
 }
 
 void PredictiveModel::predict(const WeightTable& w, const std::vector<ActiveFeature>& phi, std::uint32_t action,

@@ -141,3 +141,33 @@ TEST(PredictiveModel, ContinuousPredictionsConvergeWithTheDeltaRule) {
         EXPECT_LT(p.uncertainty, 0.1f);
     }
 }
+
+// A new state next to a well-known one shares some of its RBFs, but its own RBF was never trained:
+// it must not look as certain as the known state. Trained only at x = 0 (x -> x), the model is
+// certain there; at x = 0.2, half-way onto an RBF made but never trained, the uncertainty rises by
+// that RBF's share of the activation.
+TEST(PredictiveModel, StatesOnUntrainedRbfsAreNotCertain) {
+    AgentDescriptor d;
+    d.addContinuousSensor();
+    d.numActions = 1;
+    d.planning = true;
+    d.resolution = 10;
+    Fixture f(d);
+    const auto known = f.features({}, {0.0f});
+    const float stay = 0.0f;
+    for (int i = 0; i < 50; ++i) f.model.train(f.weights, known, 0, nullptr, &stay, 0.0f, f.model.rate(0.1f));
+    const auto fresh = f.features({}, {0.2f});  // allocates an RBF at 0.2, one width away
+    ASSERT_EQ(f.rep.featureCount(), 2u);
+    Prediction atKnown, atFresh;
+    f.model.predict(f.weights, known, 0, atKnown);
+    f.model.predict(f.weights, fresh, 0, atFresh);
+    EXPECT_LT(atKnown.uncertainty, 0.2f);
+    float trainedShare = 0.0f, total = 0.0f;
+    for (const auto& feature : fresh) {
+        total += feature.activation;
+        if (feature.index == known.front().index) trainedShare += feature.activation;
+    }
+    // Without the untrained RBF's share the old certainty would carry over (< 0.2).
+    EXPECT_GT(atFresh.uncertainty, 1.0f - (1.0f - atKnown.uncertainty) * trainedShare / total - 0.05f);
+    EXPECT_GT(atFresh.uncertainty, 0.4f);
+}
