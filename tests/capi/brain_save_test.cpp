@@ -154,7 +154,7 @@ TEST_F(BrainSaves, CorruptOrTruncatedBinarySavesAreRefusedAndHandOutNothing) {
 }
 
 // The size query, a buffer one byte short (refused, untouched, the size needed reported), then
-// the save itself; the bytes a size query keeps go only to a call of the same format.
+// the save itself, which loads and saves again to the same bytes.
 TEST_F(BrainSaves, TwoCallsInEitherFormat) {
     for (const Format& f : kFormats) {
         size_t size = 0;
@@ -175,18 +175,6 @@ TEST_F(BrainSaves, TwoCallsInEitherFormat) {
         EXPECT_EQ(saveOf(copy, f.brainSave), bytes) << f.name;
         verve_brain_destroy(copy);
     }
-    const std::string xml = saveOf(brain_, verve_brain_save_memory);
-    const std::string binary = saveOf(brain_, verve_brain_save_memory_binary);
-    std::string out(xml.size() + binary.size(), '\0');
-    size_t size = 0;
-    ASSERT_EQ(verve_brain_save_memory(brain_, nullptr, &size), VERVE_OK);
-    size = out.size();
-    ASSERT_EQ(verve_brain_save_memory_binary(brain_, &out[0], &size), VERVE_OK);
-    EXPECT_EQ(out.substr(0, size), binary);
-    ASSERT_EQ(verve_brain_save_memory_binary(brain_, nullptr, &size), VERVE_OK);
-    size = out.size();
-    ASSERT_EQ(verve_brain_save_memory(brain_, &out[0], &size), VERVE_OK);
-    EXPECT_EQ(out.substr(0, size), xml);
 }
 
 // The size query keeps its bytes for the call with a buffer; a change through any body in between
