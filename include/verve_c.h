@@ -279,11 +279,15 @@ VERVE_API void VERVE_CALL verve_brain_destroy(verve_brain* brain); /* NULL is ig
 VERVE_API verve_result VERVE_CALL verve_brain_create_body(verve_brain* brain, verve_agent** out_body);
 VERVE_API verve_result VERVE_CALL verve_brain_get_rbf_count(const verve_brain* brain, uint32_t* out_count);
 /* Saves are agent saves without short-term memory: a brain save loads as an agent and an agent
- * save loads as a brain. The memory calls follow verve_agent_save_memory's two-call pattern. */
+ * save loads as a brain, in either format (loads tell XML and binary apart). The memory calls
+ * follow verve_agent_save_memory's two-call pattern (serialised once for both calls). */
 VERVE_API verve_result VERVE_CALL verve_brain_save(const verve_brain* brain, const char* path);
 VERVE_API verve_result VERVE_CALL verve_brain_load(const char* path, verve_brain** out);
 VERVE_API verve_result VERVE_CALL verve_brain_save_memory(const verve_brain* brain, void* buffer, size_t* size);
 VERVE_API verve_result VERVE_CALL verve_brain_load_memory(const void* data, size_t size, verve_brain** out);
+/* The same saves in the compact binary format (as verve_agent_save_binary's). */
+VERVE_API verve_result VERVE_CALL verve_brain_save_binary(const verve_brain* brain, const char* path);
+VERVE_API verve_result VERVE_CALL verve_brain_save_memory_binary(const verve_brain* brain, void* buffer, size_t* size);
 
 /* ---- many agents in one call ------------------------------------------------------------ */
 /* A host job system (as Box2D v3's b2WorldDef takes one): enqueue_task runs task over

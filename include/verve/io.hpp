@@ -28,10 +28,10 @@ std::string saveAgentToString(const Agent& agent, const SaveOptions& options = {
 Agent loadAgent(const std::string& path);
 Agent loadAgentFromMemory(const char* data, std::size_t size);
 
-// A shared brain is saved as an agent without short-term memory (the same XML format): either
-// kind of save loads as a Brain (its RBFs and weights) or as an Agent.
-void saveBrain(const Brain& brain, const std::string& path);
-std::string saveBrainToString(const Brain& brain);
+// A shared brain is saved as an agent without short-term memory (the same formats, XML or
+// binary): either kind of save loads as a Brain (its RBFs and weights) or as an Agent.
+void saveBrain(const Brain& brain, const std::string& path, SaveFormat format = SaveFormat::Xml);
+std::string saveBrainToString(const Brain& brain, SaveFormat format = SaveFormat::Xml);
 Brain loadBrain(const std::string& path);
 Brain loadBrainFromMemory(const char* data, std::size_t size);
 

@@ -2,29 +2,18 @@
 // it at once, and the save of the latest size query.
 #pragma once
 #include <atomic>
+#include <cstddef>
 #include <memory>
-#include <cstdint>
-#include <string>
 #include <type_traits>
 #include <utility>
 
+#include "capi/capi_buffer.hpp"
 #include "capi/capi_guard.hpp"
 #include "verve/agent.hpp"
 #include "verve/io.hpp"
 
-namespace verve::capi {
-
-// Counts the changes to an agent's learned state, so that a kept save is served only while it is
-// current. Shared by a brain and all its bodies, since a body's save holds the shared weights.
-// Only the holder of the in-use flag changes it (AgentUse), so relaxed order suffices.
-using ChangeCounter = std::shared_ptr<std::atomic<std::uint64_t>>;
-inline ChangeCounter newChangeCounter() { return std::make_shared<std::atomic<std::uint64_t>>(0); }
-
-}  // namespace verve::capi
-
 struct verve_agent {
     explicit verve_agent(verve::Agent&& a) : agent_(std::move(a)) {}
-    ~verve_agent() { dropSave(); }
     verve_agent(const verve_agent&) = delete;
     verve_agent& operator=(const verve_agent&) = delete;
 
@@ -37,22 +26,11 @@ struct verve_agent {
     // A brain's body counts its changes with the brain (and so with every other body).
     void shareChangesWith(verve::capi::ChangeCounter brainChanges) { changes_ = std::move(brainChanges); }
 
-    // verve_agent_save_memory's (and _binary's) two calls: the size query keeps the bytes it made,
-    // and the call with a buffer in the same format copies them instead of serialising again, if
-    // the agent (or, for a body, its brain) did not change in between.
-    const std::string& keepSave(std::string bytes, verve::SaveFormat format) const {
-        hasSave_ = true;
-        save_ = std::move(bytes);
-        saveFormat_ = format;
-        saveAt_ = changes_->load(std::memory_order_relaxed);
-        return save_;
-    }
-    const std::string* keptSave(verve::SaveFormat format) const {
-        return hasSave_ && saveFormat_ == format && saveAt_ == changes_->load(std::memory_order_relaxed) ? &save_ : nullptr;
-    }
-    void dropSave() const {
-        hasSave_ = false;
-        std::string().swap(save_);
+    // verve_agent_save_memory's (and _binary's) two calls serialise once: the size query keeps its
+    // bytes for the call with a buffer, unless the agent (or, for a body, its brain) changed between.
+    template <typename Serialise>
+    void saveToBuffer(verve::SaveFormat format, Serialise&& serialise, void* buffer, std::size_t& size) const {
+        save_.serve(format, changes_, std::forward<Serialise>(serialise), buffer, size);
     }
 
     // Set for the duration of every call on this agent. Mutable: read-only calls take it too,
@@ -66,10 +44,7 @@ private:
     verve::Agent agent_;
     verve::capi::ChangeCounter changes_ = verve::capi::newChangeCounter();
     // Mutable: a save is a const call (one agent is used by one thread at a time).
-    mutable bool hasSave_ = false;
-    mutable std::string save_;
-    mutable verve::SaveFormat saveFormat_ = verve::SaveFormat::Xml;
-    mutable std::uint64_t saveAt_ = 0;
+    mutable verve::capi::KeptSave save_;
 };
 
 namespace verve::capi {

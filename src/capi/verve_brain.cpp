@@ -16,8 +16,11 @@ struct verve_brain {
     // Shared with every body (verve_agent::brainInUse): a call on the brain or on any of its bodies
     // holds it, so two threads never touch the shared weights at once.
     std::shared_ptr<std::atomic<bool>> inUse = std::make_shared<std::atomic<bool>>(false);
-    // Shared with every body: a change through one body makes every body's kept save stale.
+    // Shared with every body: a change through one body makes the brain's and every body's kept save stale.
     verve::capi::ChangeCounter changes = verve::capi::newChangeCounter();
+    // verve_brain_save_memory's (and _binary's) size query, kept for the call with a buffer.
+    // Mutable: a save is a const call (a brain is used by one thread at a time).
+    mutable verve::capi::KeptSave save;
 };
 
 namespace {
@@ -41,6 +44,19 @@ private:
 };
 
 void handOutBrain(verve::Brain&& brain, verve_brain** out) { *out = new verve_brain(std::move(brain)); }
+
+void saveToFile(const verve_brain* brain, const char* path, verve::SaveFormat format) {
+    const BrainUse use(brain);
+    requireArg(path, "path");
+    verve::saveBrain(brain->brain, path, format);
+}
+
+// The two-call buffer save of either format, serialised once for both calls.
+void saveToMemory(const verve_brain* brain, void* buffer, size_t* size, verve::SaveFormat format) {
+    const BrainUse use(brain);
+    requireArg(size, "size");
+    brain->save.serve(format, brain->changes, [&] { return verve::saveBrainToString(brain->brain, format); }, buffer, *size);
+}
 
 }  // namespace
 
@@ -77,12 +93,11 @@ VERVE_API verve_result VERVE_CALL verve_brain_get_rbf_count(const verve_brain* b
 }
 
 VERVE_API verve_result VERVE_CALL verve_brain_save(const verve_brain* brain, const char* path) {
-    return guarded(__func__, [&] {
-        const BrainUse use(brain);
-        const verve::Brain& b = brain->brain;
-        requireArg(path, "path");
-        verve::saveBrain(b, path);
-    });
+    return guarded(__func__, [&] { saveToFile(brain, path, verve::SaveFormat::Xml); });
+}
+
+VERVE_API verve_result VERVE_CALL verve_brain_save_binary(const verve_brain* brain, const char* path) {
+    return guarded(__func__, [&] { saveToFile(brain, path, verve::SaveFormat::Binary); });
 }
 
 VERVE_API verve_result VERVE_CALL verve_brain_load(const char* path, verve_brain** out) {
@@ -94,12 +109,11 @@ VERVE_API verve_result VERVE_CALL verve_brain_load(const char* path, verve_brain
 }
 
 VERVE_API verve_result VERVE_CALL verve_brain_save_memory(const verve_brain* brain, void* buffer, size_t* size) {
-    return guarded(__func__, [&] {
-        const BrainUse use(brain);
-        const verve::Brain& b = brain->brain;
-        requireArg(size, "size");
-        verve::capi::copyOut(verve::saveBrainToString(b), buffer, *size);
-    });
+    return guarded(__func__, [&] { saveToMemory(brain, buffer, size, verve::SaveFormat::Xml); });
+}
+
+VERVE_API verve_result VERVE_CALL verve_brain_save_memory_binary(const verve_brain* brain, void* buffer, size_t* size) {
+    return guarded(__func__, [&] { saveToMemory(brain, buffer, size, verve::SaveFormat::Binary); });
 }
 
 VERVE_API verve_result VERVE_CALL verve_brain_load_memory(const void* data, size_t size, verve_brain** out) {

@@ -1,10 +1,6 @@
 // Saving and loading agents, XML or binary: files (atomic) and memory buffers (two-call size
 // pattern). Loading tells the formats apart by their first bytes.
-#include <cstring>
-#include <string>
-
 #include "capi/capi_agent.hpp"
-#include "capi/capi_buffer.hpp"
 #include "verve/io.hpp"
 
 using verve::capi::AgentUse;
@@ -31,11 +27,7 @@ void saveToMemory(const verve_agent* agent, void* buffer, size_t* size, verve::S
     const AgentUse use(agent);
     const verve::Agent& a = use.agent();
     requireArg(size, "size");
-    // Serialised once for both calls: the size query keeps its bytes for the call with a buffer.
-    const std::string* kept = agent->keptSave(format);
-    if (kept == nullptr) kept = &agent->keepSave(verve::saveAgentToString(a, inFormat(format)), format);
-    verve::capi::copyOut(*kept, buffer, *size);
-    if (buffer != nullptr) agent->dropSave();  // delivered: free the copy
+    agent->saveToBuffer(format, [&] { return verve::saveAgentToString(a, inFormat(format)); }, buffer, *size);
 }
 
 }  // namespace

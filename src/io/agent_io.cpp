@@ -43,6 +43,9 @@ std::string encode(const AgentSnapshot& snapshot, const SaveOptions& options) {
                                                 : io::snapshotToXml(snapshot, options.includeTraces);
 }
 
+// A brain has no short-term memory to save.
+SaveOptions brainOptions(SaveFormat format) { return SaveOptions{false, format}; }
+
 void save(const AgentSnapshot& snapshot, const std::string& path, const SaveOptions& options) {
     naming("save '" + path + "'", [&] { io::writeFileAtomically(path, encode(snapshot, options)); });
 }
@@ -63,11 +66,13 @@ Agent loadAgentFromMemory(const char* data, std::size_t size) {
     return naming("load from memory", [&] { return from<Agent>(data, size); });
 }
 
-std::string saveBrainToString(const Brain& brain) {
-    return naming("save", [&] { return io::snapshotToXml(brain.snapshot(), false); });
+std::string saveBrainToString(const Brain& brain, SaveFormat format) {
+    return naming("save", [&] { return encode(brain.snapshot(), brainOptions(format)); });
 }
 
-void saveBrain(const Brain& brain, const std::string& path) { save(brain.snapshot(), path, SaveOptions{false}); }
+void saveBrain(const Brain& brain, const std::string& path, SaveFormat format) {
+    save(brain.snapshot(), path, brainOptions(format));
+}
 
 Brain loadBrain(const std::string& path) { return load<Brain>(path); }
 

@@ -4,8 +4,10 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <iterator>
 #include <string>
 #include <thread>
+#include <utility>
 #include <vector>
 
 #include "hardening_support.hpp"
@@ -74,6 +76,45 @@ TEST_F(Hooks, AnUpdateAfterWarmUpAllocatesNothing) {
     EXPECT_EQ(allocator_.allocations.load() - before, 0);
     EXPECT_EQ(stats.rbf_count, rbfs);  // the warm-up made every RBF these observations need
     EXPECT_GT(stats.planning_steps + stats.steps, 0u);
+    verve_agent_destroy(agent);
+}
+
+// A memory save's two calls serialise once: the call with a buffer after a size query only copies
+// the kept bytes (serialising again would allocate), for agents and brains, in either format.
+TEST_F(Hooks, AMemorySaveSerialisesOnceForItsTwoCalls) {
+    install();
+    verve_agent* agent = createOrFail(mixedDesc(true));
+    verve_brain* brain = nullptr;
+    const verve_agent_desc d = mixedDesc(false);
+    ASSERT_EQ(verve_brain_create(&d, &brain), VERVE_OK) << lastError();
+    verve_agent* body = nullptr;
+    ASSERT_EQ(verve_brain_create_body(brain, &body), VERVE_OK) << lastError();
+    for (int i = 0; i < 100; ++i) {
+        ASSERT_EQ(lap(agent, i), VERVE_OK);
+        ASSERT_EQ(lap(body, i), VERVE_OK);
+    }
+    // Allocations made by the size query and by the call with a buffer.
+    auto allocationsOf = [&](auto save, const auto* handle) {
+        const long start = allocator_.allocations.load();
+        size_t size = 0;
+        EXPECT_EQ(save(handle, nullptr, &size), VERVE_OK) << lastError();
+        const long afterQuery = allocator_.allocations.load();
+        std::string bytes(size, '\0');
+        EXPECT_EQ(save(handle, &bytes[0], &size), VERVE_OK) << lastError();
+        return std::make_pair(afterQuery - start, allocator_.allocations.load() - afterQuery);
+    };
+    const std::pair<long, long> counts[] = {
+        allocationsOf(verve_agent_save_memory, agent),
+        allocationsOf(verve_agent_save_memory_binary, agent),
+        allocationsOf(verve_brain_save_memory, brain),
+        allocationsOf(verve_brain_save_memory_binary, brain),
+    };
+    for (std::size_t i = 0; i < std::size(counts); ++i) {
+        EXPECT_GT(counts[i].first, 0) << "save " << i << ": the size query serialises";
+        EXPECT_EQ(counts[i].second, 0) << "save " << i << ": the call with a buffer serialised again";
+    }
+    verve_agent_destroy(body);
+    verve_brain_destroy(brain);
     verve_agent_destroy(agent);
 }
 

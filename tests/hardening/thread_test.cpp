@@ -4,6 +4,7 @@
 #include <gtest/gtest.h>
 
 #include <atomic>
+#include <chrono>
 #include <cmath>
 #include <string>
 #include <thread>
@@ -98,6 +99,68 @@ TEST(Threads, MemorySavesIgnoreOtherAgentsChanges) {
     EXPECT_EQ(failure, "");
     verve_agent_destroy(busy);
     verve_agent_destroy(saved);
+}
+
+// A brain's memory saves on one thread while another thread updates one of its bodies: each call
+// runs alone or is refused, and every save delivered is whole (it loads), in either format. The
+// size query's kept bytes are the brain's, and the body's updates make them stale.
+TEST(Threads, BrainSavesWhileABodyLearnsAreWholeOrRefused) {
+    verve_brain* brain = nullptr;
+    const verve_agent_desc d = mixedDesc(false, 13);
+    ASSERT_EQ(verve_brain_create(&d, &brain), VERVE_OK) << lastError();
+    verve_agent* body = nullptr;
+    ASSERT_EQ(verve_brain_create_body(brain, &body), VERVE_OK) << lastError();
+    std::atomic<bool> stop{false};
+    std::atomic<long> updates{0};
+    std::atomic<int> learnerError{VERVE_OK};
+    std::thread learner([&] {
+        uint32_t action = 0;
+        for (int i = 0; !stop.load() && learnerError.load() == VERVE_OK; ++i) {
+            const verve_result r = step(body, i, &action);
+            if (r == VERVE_OK) ++updates;
+            else if (r != VERVE_ERROR_INVALID_STATE) learnerError = r;
+            std::this_thread::yield();  // let the saver in now and then
+        }
+    });
+    std::string failure;
+    long delivered = 0;
+    // Until 100 saves and 100 updates have gone through, or 10 s (a loaded machine) have passed.
+    const auto deadline = std::chrono::steady_clock::now() + std::chrono::seconds(10);
+    for (int round = 0; (delivered < 100 || updates.load() < 100) && failure.empty() &&
+                        std::chrono::steady_clock::now() < deadline;
+         ++round) {
+        const auto save = round % 2 == 0 ? verve_brain_save_memory : verve_brain_save_memory_binary;
+        size_t size = 0;
+        verve_result r = save(brain, nullptr, &size);
+        if (r == VERVE_ERROR_INVALID_STATE) continue;
+        if (r != VERVE_OK) {
+            failure = lastError();
+            break;
+        }
+        std::string bytes(size + 65536, '\0');  // room for the RBFs the body may add meanwhile
+        size = bytes.size();
+        r = save(brain, &bytes[0], &size);
+        // Refused, or the body added more RBFs than the room allows: the size is right, try again.
+        if (r == VERVE_ERROR_INVALID_STATE || r == VERVE_ERROR_BUFFER_TOO_SMALL) continue;
+        if (r != VERVE_OK) {
+            failure = lastError();
+            break;
+        }
+        verve_brain* loaded = nullptr;
+        if (verve_brain_load_memory(bytes.data(), size, &loaded) != VERVE_OK) {
+            failure = "round " + std::to_string(round) + ": " + lastError();
+        }
+        verve_brain_destroy(loaded);
+        ++delivered;
+    }
+    stop = true;
+    learner.join();
+    EXPECT_EQ(failure, "");
+    EXPECT_GT(delivered, 0);
+    EXPECT_GT(updates.load(), 0);
+    EXPECT_EQ(learnerError.load(), VERVE_OK);
+    verve_agent_destroy(body);
+    verve_brain_destroy(brain);
 }
 
 // Two threads hammer one agent: every call either runs alone or is refused, so the steps the

@@ -1,5 +1,6 @@
-// The compact binary save: exact round trips, and every truncation, bit flip and hostile count
-// refused with a clear error (the same guarantees as the XML save).
+// The compact binary save: exact round trips (agents, and brains to brains and agents), and every
+// truncation, bit flip and hostile count in an agent's or a brain's save refused with a clear error
+// (the same guarantees as the XML save).
 #include <gtest/gtest.h>
 
 #include <atomic>
@@ -34,16 +35,35 @@ namespace {
 using iotest::expectSameFuture;
 using iotest::expectSameSnapshot;
 using iotest::trainedAgent;
+using iotest::trainedBrain;
 
 const SaveOptions kBinary{true, SaveFormat::Binary};
 
 std::string binarySave(const Agent& agent) { return saveAgentToString(agent, kBinary); }
 
 
+// What the corruption tests damage: an agent's save loaded as an agent, or a brain's as a brain.
+enum class Subject { Agent, Brain };
+
+std::string cleanSave(Subject subject) {
+    const AgentDescriptor d = iotest::mixedDescriptor();
+    return subject == Subject::Agent ? binarySave(trainedAgent(d, 410)) : saveBrainToString(trainedBrain(d, 410), SaveFormat::Binary);
+}
+
+std::size_t rbfCountOf(Subject subject, const std::string& bytes) {
+    return subject == Subject::Agent ? loadAgentFromMemory(bytes.data(), bytes.size()).rbfCount()
+                                     : loadBrainFromMemory(bytes.data(), bytes.size()).rbfCount();
+}
+
+void load(Subject subject, const std::string& data) {
+    if (subject == Subject::Agent) loadAgentFromMemory(data.data(), data.size());
+    else loadBrainFromMemory(data.data(), data.size());
+}
+
 // Loading must throw a Format error (or Version, when `versionToo`) with a message.
-void expectRefused(const std::string& data, const std::string& what, bool versionToo = false) {
+void expectRefused(const std::string& data, const std::string& what, bool versionToo = false, Subject subject = Subject::Agent) {
     try {
-        loadAgentFromMemory(data.data(), data.size());
+        load(subject, data);
         ADD_FAILURE() << what << " loaded";
     } catch (const Error& e) {
         if (!(versionToo && e.code() == ErrorCode::Version)) {
@@ -101,9 +121,56 @@ TEST(BinarySave, ThroughAFileLoadRecognisesTheFormat) {
     expectSameSnapshot(agent.snapshot(), loaded.snapshot());
 }
 
-class CorruptBinarySave : public ::testing::Test {
+// A brain's binary save holds what an agent's does without the short-term memory, so every route
+// between them is exact: brain to brain, brain to agent, agent (a body) to brain.
+TEST(BinarySave, BrainSavesLoadAsBrainsAndAsAgentsExactly) {
+    for (const AgentDescriptor& d : {iotest::mixedDescriptor(), iotest::plannerDescriptor()}) {
+        Brain brain = trainedBrain(d, 410);
+        const std::string bytes = saveBrainToString(brain, SaveFormat::Binary);
+        ASSERT_EQ(bytes.compare(0, 8, "VERVEBIN"), 0);
+        EXPECT_LT(bytes.size() * 2, saveBrainToString(brain).size());
+
+        const Brain copy = loadBrainFromMemory(bytes.data(), bytes.size());
+        expectSameSnapshot(brain.snapshot(), copy.snapshot());
+        EXPECT_EQ(saveBrainToString(copy, SaveFormat::Binary), bytes);
+        const std::string xml = saveBrainToString(brain);  // both formats hold the same brain
+        expectSameSnapshot(loadBrainFromMemory(xml.data(), xml.size()).snapshot(), copy.snapshot());
+
+        // As an agent: the brain's weights with a fresh short-term memory, learning on from there
+        // exactly as an agent made from the brain in memory.
+        Agent agent = loadAgentFromMemory(bytes.data(), bytes.size());
+        expectSameSnapshot(brain.snapshot(), agent.snapshot());
+        Agent inMemory(brain.snapshot());
+        expectSameFuture(inMemory, agent);
+
+        // A body's (an agent's) save as a brain: the body's short-term memory is left out.
+        Agent body = brain.makeBody();
+        iotest::Feed feed(5);
+        iotest::drive(body, feed, 30);
+        const std::string bodyBytes = binarySave(body);
+        const Brain fromBody = loadBrainFromMemory(bodyBytes.data(), bodyBytes.size());
+        expectSameSnapshot(brain.snapshot(), fromBody.snapshot());
+        EXPECT_EQ(saveBrainToString(fromBody, SaveFormat::Binary), saveBrainToString(brain, SaveFormat::Binary));
+    }
+}
+
+TEST(BinarySave, BrainFilesLoadAsBrainsAndAsAgents) {
+    const auto path = std::filesystem::temp_directory_path() / "verve_binary_brain_test.bin";
+    const Brain brain = trainedBrain(iotest::mixedDescriptor(13));
+    saveBrain(brain, path.string(), SaveFormat::Binary);
+    const Brain loaded = loadBrain(path.string());
+    const Agent agent = loadAgent(path.string());
+    std::filesystem::remove(path);
+    expectSameSnapshot(brain.snapshot(), loaded.snapshot());
+    expectSameSnapshot(brain.snapshot(), agent.snapshot());
+}
+
+class CorruptBinarySave : public ::testing::TestWithParam<Subject> {
 protected:
-    void SetUp() override { bytes_ = binarySave(trainedAgent(iotest::mixedDescriptor(), 410)); }
+    void SetUp() override { bytes_ = cleanSave(GetParam()); }
+    void expectRefused(const std::string& data, const std::string& what, bool versionToo = false) const {
+        verve::expectRefused(data, what, versionToo, GetParam());
+    }
 
     // The save with the u64 at payload offset `at` replaced and the checksum made valid again:
     // what a hostile writer (not random damage) can produce.
@@ -123,14 +190,14 @@ protected:
     std::string bytes_;
 };
 
-TEST_F(CorruptBinarySave, EveryTruncationIsRefused) {
+TEST_P(CorruptBinarySave, EveryTruncationIsRefused) {
     for (std::size_t cut = 1; cut < bytes_.size(); ++cut) {
         expectRefused(bytes_.substr(0, cut), "a save cut at byte " + std::to_string(cut));
     }
     expectRefused(bytes_ + "x", "a save with a byte appended");
 }
 
-TEST_F(CorruptBinarySave, EverySingleBitFlipIsRefused) {
+TEST_P(CorruptBinarySave, EverySingleBitFlipIsRefused) {
     for (std::size_t bit = 0; bit < bytes_.size() * 8; ++bit) {
         std::string s = bytes_;
         s[bit / 8] = static_cast<char>(s[bit / 8] ^ (1 << (bit % 8)));
@@ -140,11 +207,11 @@ TEST_F(CorruptBinarySave, EverySingleBitFlipIsRefused) {
     }
 }
 
-TEST_F(CorruptBinarySave, FutureVersionIsAVersionError) {
+TEST_P(CorruptBinarySave, FutureVersionIsAVersionError) {
     std::string s = bytes_;
     s[8] = 2;
     try {
-        loadAgentFromMemory(s.data(), s.size());
+        load(GetParam(), s);
         ADD_FAILURE() << "a newer version loaded";
     } catch (const Error& e) {
         EXPECT_EQ(e.code(), ErrorCode::Version) << e.what();
@@ -152,11 +219,11 @@ TEST_F(CorruptBinarySave, FutureVersionIsAVersionError) {
     }
 }
 
-TEST_F(CorruptBinarySave, ChecksumMismatchIsNamed) {
+TEST_P(CorruptBinarySave, ChecksumMismatchIsNamed) {
     std::string s = bytes_;
     s.back() = static_cast<char>(s.back() ^ 0x10);
     try {
-        loadAgentFromMemory(s.data(), s.size());
+        load(GetParam(), s);
         ADD_FAILURE();
     } catch (const Error& e) {
         EXPECT_NE(std::string(e.what()).find("checksum"), std::string::npos) << e.what();
@@ -169,15 +236,15 @@ TEST_F(CorruptBinarySave, ChecksumMismatchIsNamed) {
 constexpr std::size_t kDiscreteCountAt = 66;
 constexpr std::size_t kFeatureCountAt = 66 + 8 + 4 + 8 + 2 + 49;
 
-TEST_F(CorruptBinarySave, HugeCountsAreRefusedWithoutAllocating) {
+TEST_P(CorruptBinarySave, HugeCountsAreRefusedWithoutAllocating) {
     ASSERT_EQ(countAt(kDiscreteCountAt), 1u);  // the layout this test edits
-    ASSERT_EQ(countAt(kFeatureCountAt), trainedAgent(iotest::mixedDescriptor(), 410).rbfCount());
+    ASSERT_EQ(countAt(kFeatureCountAt), rbfCountOf(GetParam(), bytes_));
     for (std::size_t at : {kDiscreteCountAt, kFeatureCountAt}) {
         for (std::uint64_t count : {std::uint64_t{1} << 28, std::uint64_t{1} << 61, ~std::uint64_t{0}}) {
             const std::string hostile = withCount(at, count);
             g_largestAllocation = 0;
             try {
-                loadAgentFromMemory(hostile.data(), hostile.size());
+                load(GetParam(), hostile);
                 ADD_FAILURE() << "a count of " << count << " loaded";
             } catch (const Error& e) {
                 EXPECT_EQ(e.code(), ErrorCode::Format);
@@ -188,11 +255,16 @@ TEST_F(CorruptBinarySave, HugeCountsAreRefusedWithoutAllocating) {
     }
 }
 
-TEST_F(CorruptBinarySave, AConsistentButWrongSaveGetsTheSameChecksAsXml) {
+TEST_P(CorruptBinarySave, AConsistentButWrongSaveGetsTheSameChecksAsXml) {
     // One feature key fewer, checksum valid: the snapshot checks catch what the layout cannot.
     const std::string s = withCount(kFeatureCountAt, countAt(kFeatureCountAt) - 1);
     expectRefused(s, "a save whose lists disagree");
 }
+
+INSTANTIATE_TEST_SUITE_P(AgentAndBrain, CorruptBinarySave, ::testing::Values(Subject::Agent, Subject::Brain),
+                         [](const ::testing::TestParamInfo<Subject>& param) {
+                             return param.param == Subject::Agent ? "AgentSave" : "BrainSave";
+                         });
 
 }  // namespace
 }  // namespace verve

@@ -8,6 +8,7 @@
 #include <vector>
 
 #include "verve/agent.hpp"
+#include "verve/brain.hpp"
 
 namespace verve::iotest {
 
@@ -75,6 +76,15 @@ inline Agent trainedAgent(const AgentDescriptor& d, int steps = 400, std::uint64
     Feed feed(feedSeed);
     drive(agent, feed, steps);
     return agent;
+}
+
+// A brain trained by two bodies taking turns on one feed (`steps` updates in all).
+inline Brain trainedBrain(const AgentDescriptor& d, int steps = 400, std::uint64_t feedSeed = 3) {
+    Brain brain(d);
+    Agent bodies[2] = {brain.makeBody(), brain.makeBody()};
+    Feed feed(feedSeed);
+    for (int i = 0; i < steps; ++i) drive(bodies[i % 2], feed, 1);
+    return brain;
 }
 
 inline bool sameBits(const std::vector<float>& a, const std::vector<float>& b) {

@@ -5,7 +5,8 @@ using Xunit;
 namespace Verve.Tests
 {
     // Many agents through the real runtime: a batch equals updates in order on any thread count,
-    // bodies of one brain share what they learn, bad input refuses the whole batch.
+    // bodies of one brain share what they learn, a brain saves (XML and binary) and loads as a brain or
+    // an agent, bad input refuses the whole batch.
     public class CrowdTests
     {
         private static (Agent[] agents, Brain brain) Crowd()
@@ -120,6 +121,56 @@ namespace Verve.Tests
             System.IO.File.Delete(path);
             Assert.Equal(ResultCode.Format, Assert.Throws<VerveException>(() => Brain.LoadFromBytes(saved.AsSpan(0, 50))).Code);
             Assert.Throws<VerveException>(() => new Brain(new AgentOptions { Actions = 0 }));
+        }
+
+        [Fact]
+        public void BrainBinarySavesLoadAsBrainsAndAsAgentsAndAgentSavesAsBrains()
+        {
+            using var brain = new Brain(new AgentOptions { Actions = 2, Seed = 4 }.AddDiscreteSensor(3).AddContinuousSensor());
+            using var first = brain.CreateBody();
+            using var second = brain.CreateBody();
+            for (int t = 0; t < 200; t++)
+                (t % 2 == 0 ? first : second).Update(t % 5 == 0 ? 1f : 0f, new[] { t % 3 }, new[] { (float)Math.Sin(t) }, TestAgents.Dt);
+
+            byte[] bytes = brain.SaveToBinaryBytes();
+            Assert.Equal("VERVEBIN", System.Text.Encoding.ASCII.GetString(bytes, 0, 8));
+            Assert.True(bytes.Length < brain.SaveToBytes().Length, "the binary save is smaller than the XML");
+            using (var copy = Brain.LoadFromBytes(bytes))
+            {
+                Assert.Equal(bytes, copy.SaveToBinaryBytes());
+                Assert.Equal(brain.SaveToBytes(), copy.SaveToBytes());
+            }
+            using (var asAgent = Agent.LoadFromBytes(bytes))
+            using (var back = Brain.LoadFromBytes(asAgent.SaveToBinaryBytes()))
+                Assert.Equal(bytes, back.SaveToBinaryBytes());
+            using (var fromBody = Brain.LoadFromBytes(first.SaveToBinaryBytes()))
+                Assert.Equal(bytes, fromBody.SaveToBinaryBytes());
+
+            string path = System.IO.Path.Combine(System.IO.Path.GetTempPath(), $"verve-brain-{Guid.NewGuid():N}.bin");
+            brain.SaveBinary(path);
+            Assert.Equal(bytes, System.IO.File.ReadAllBytes(path));
+            using (var fromFile = Brain.Load(path)) Assert.Equal(bytes, fromFile.SaveToBinaryBytes());
+            using (var agentFromFile = Agent.Load(path)) Assert.Equal(brain.RbfCount, agentFromFile.RbfCount);
+            System.IO.File.Delete(path);
+
+            byte[] damaged = (byte[])bytes.Clone();
+            damaged[damaged.Length / 2] ^= 1;
+            var e = Assert.Throws<VerveException>(() => Brain.LoadFromBytes(damaged));
+            Assert.Equal(ResultCode.Format, e.Code);
+            Assert.Contains("checksum", e.Message);
+            Assert.Equal(ResultCode.Format, Assert.Throws<VerveException>(() => Brain.LoadFromBytes(bytes.AsSpan(0, 40))).Code);
+            Assert.Equal(ResultCode.Io, Assert.Throws<VerveException>(() => brain.SaveBinary("/nonexistent/dir/brain.bin")).Code);
+        }
+
+        [Fact]
+        public void EverySaveOfADisposedBrainThrows()
+        {
+            var brain = new Brain(new AgentOptions { Actions = 2 }.AddContinuousSensor());
+            brain.Dispose();
+            foreach (Action call in new Action[] { () => brain.Save("never-written.xml"), () => brain.SaveBinary("never-written.xml"),
+                                                   () => brain.SaveToBytes(), () => brain.SaveToBinaryBytes() })
+                Assert.Equal(nameof(Brain), Assert.Throws<ObjectDisposedException>(call).ObjectName);
+            Assert.False(System.IO.File.Exists("never-written.xml"));
         }
     }
 }

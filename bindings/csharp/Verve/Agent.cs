@@ -269,15 +269,9 @@ namespace Verve
         private unsafe byte[] SaveMemory(bool binary)
         {
             AgentHandle handle = Handle;
-            var size = UIntPtr.Zero;
-            VerveException.ThrowIfFailed(binary ? NativeMethods.verve_agent_save_memory_binary(handle, null, ref size)
-                                                : NativeMethods.verve_agent_save_memory(handle, null, ref size));
-            var bytes = new byte[checked((int)size.ToUInt64())];
-            fixed (byte* b = bytes)
-                VerveException.ThrowIfFailed(binary ? NativeMethods.verve_agent_save_memory_binary(handle, b, ref size)
-                                                    : NativeMethods.verve_agent_save_memory(handle, b, ref size));
-            if (size.ToUInt64() != (ulong)bytes.Length) Array.Resize(ref bytes, (int)size.ToUInt64());
-            return bytes;
+            return MemorySave.ToBytes(binary
+                ? (MemorySave.Call)((byte* b, ref UIntPtr size) => NativeMethods.verve_agent_save_memory_binary(handle, b, ref size))
+                : (byte* b, ref UIntPtr size) => NativeMethods.verve_agent_save_memory(handle, b, ref size));
         }
 
         /// <summary>Loads an agent from bytes made by <see cref="SaveToBytes"/> or <see cref="SaveToBinaryBytes"/>.</summary>

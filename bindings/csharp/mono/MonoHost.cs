@@ -273,8 +273,8 @@ static class MonoHost
             crowd.Dispose();
         });
 
-        Check("Brain.SaveToBytes(); Brain.LoadFromBytes(ReadOnlySpan<Byte>); Brain.Save(String); Brain.Load(String); " +
-              "Brain.Dispose(); Brain.get_IsDisposed()", () =>
+        Check("Brain.SaveToBytes(); Brain.SaveToBinaryBytes(); Brain.LoadFromBytes(ReadOnlySpan<Byte>); Brain.Save(String); " +
+              "Brain.SaveBinary(String); Brain.Load(String); Brain.Dispose(); Brain.get_IsDisposed()", () =>
         {
             var brain = new Brain(new AgentOptions { Actions = 2 }.AddContinuousSensor());
             Agent body = brain.CreateBody();
@@ -287,6 +287,16 @@ static class MonoHost
             Brain fromFile = Brain.Load(path);
             File.Delete(path);
             Require(fromFile.RbfCount == brain.RbfCount, "a brain loaded from a file has other RBFs");
+            byte[] binary = brain.SaveToBinaryBytes();
+            Brain binaryCopy = Brain.LoadFromBytes(binary);
+            Require(binaryCopy.SaveToBinaryBytes().SequenceEqual(binary), "a binary save loads to another brain");
+            string binaryPath = Path.Combine(Path.GetTempPath(), "verve-mono-brain-" + Guid.NewGuid().ToString("N") + ".bin");
+            brain.SaveBinary(binaryPath);
+            Brain fromBinaryFile = Brain.Load(binaryPath);
+            File.Delete(binaryPath);
+            Require(fromBinaryFile.SaveToBinaryBytes().SequenceEqual(binary), "a binary file loads to another brain");
+            binaryCopy.Dispose();
+            fromBinaryFile.Dispose();
             Require(!brain.IsDisposed, "disposed too early");
             brain.Dispose();
             Require(brain.IsDisposed, "IsDisposed after Dispose");

@@ -667,39 +667,40 @@ static int lv_sample_values(lua_State* L) {
     return 1;
 }
 
+/* A save of the agent or of the brain at index 1: the agent's function, or NULL and the brain's. */
 typedef verve_result (VERVE_CALL* lv_file_save)(const verve_agent*, const char*);
 typedef verve_result (VERVE_CALL* lv_memory_save)(const verve_agent*, void*, size_t*);
+typedef verve_result (VERVE_CALL* lv_brain_file_save)(const verve_brain*, const char*);
+typedef verve_result (VERVE_CALL* lv_brain_memory_save)(const verve_brain*, void*, size_t*);
 
-static int lv_save_file(lua_State* L, lv_file_save save, const char* name) {
+static verve_brain* lv_open_brain(lua_State* L);
+
+static int lv_save_file(lua_State* L, lv_file_save agent_save, lv_brain_file_save brain_save, const char* name) {
     const char* path = luaL_checkstring(L, 2);
-    verve_result r = save(lv_open_agent(L), path);
+    verve_result r = agent_save ? agent_save(lv_open_agent(L), path) : brain_save(lv_open_brain(L), path);
     if (r != VERVE_OK) return lv_fail(L, name, r);
     return 0;
 }
 
-static verve_brain* lv_open_brain(lua_State* L);
-
-/* The save of an agent (`agent_save`) or, when it is NULL, of a brain at index 1 as a Lua string. */
-static int lv_push_save(lua_State* L, lv_memory_save agent_save, const char* name) {
+/* The memory save as a Lua string. */
+static int lv_push_save(lua_State* L, lv_memory_save agent_save, lv_brain_memory_save brain_save, const char* name) {
     size_t size = 0;
     void* buffer;
-    verve_result r = agent_save ? agent_save(lv_open_agent(L), NULL, &size)
-                                : verve_brain_save_memory(lv_open_brain(L), NULL, &size);
+    verve_result r = agent_save ? agent_save(lv_open_agent(L), NULL, &size) : brain_save(lv_open_brain(L), NULL, &size);
     if (r != VERVE_OK && r != VERVE_ERROR_BUFFER_TOO_SMALL) return lv_fail(L, name, r);
     buffer = lua_newuserdata(L, size ? size : 1); /* collected by Lua, even if a later call errors */
     /* Opened again: a finalizer run by that allocation may have closed it. */
-    r = agent_save ? agent_save(lv_open_agent(L), buffer, &size)
-                   : verve_brain_save_memory(lv_open_brain(L), buffer, &size);
+    r = agent_save ? agent_save(lv_open_agent(L), buffer, &size) : brain_save(lv_open_brain(L), buffer, &size);
     if (r != VERVE_OK) return lv_fail(L, name, r);
     lua_pushlstring(L, (const char*)buffer, size);
     return 1;
 }
 
-static int lv_save(lua_State* L) { return lv_save_file(L, verve_agent_save, "save"); }
-static int lv_save_string(lua_State* L) { return lv_push_save(L, verve_agent_save_memory, "save_string"); }
-static int lv_save_binary(lua_State* L) { return lv_save_file(L, verve_agent_save_binary, "save_binary"); }
+static int lv_save(lua_State* L) { return lv_save_file(L, verve_agent_save, NULL, "save"); }
+static int lv_save_string(lua_State* L) { return lv_push_save(L, verve_agent_save_memory, NULL, "save_string"); }
+static int lv_save_binary(lua_State* L) { return lv_save_file(L, verve_agent_save_binary, NULL, "save_binary"); }
 static int lv_save_binary_string(lua_State* L) {
-    return lv_push_save(L, verve_agent_save_memory_binary, "save_binary_string");
+    return lv_push_save(L, verve_agent_save_memory_binary, NULL, "save_binary_string");
 }
 
 /* close, __gc and __close: idempotent. */
@@ -785,14 +786,12 @@ static int lv_brain_rbf_count(lua_State* L) {
     return 1;
 }
 
-static int lv_brain_save(lua_State* L) {
-    verve_brain* b = lv_open_brain(L);
-    verve_result r = verve_brain_save(b, luaL_checkstring(L, 2));
-    if (r != VERVE_OK) return lv_fail(L, "save", r);
-    return 0;
+static int lv_brain_save(lua_State* L) { return lv_save_file(L, NULL, verve_brain_save, "save"); }
+static int lv_brain_save_string(lua_State* L) { return lv_push_save(L, NULL, verve_brain_save_memory, "save_string"); }
+static int lv_brain_save_binary(lua_State* L) { return lv_save_file(L, NULL, verve_brain_save_binary, "save_binary"); }
+static int lv_brain_save_binary_string(lua_State* L) {
+    return lv_push_save(L, NULL, verve_brain_save_memory_binary, "save_binary_string");
 }
-
-static int lv_brain_save_string(lua_State* L) { return lv_push_save(L, NULL, "save_string"); }
 
 static int lv_brain_close(lua_State* L) {
     lv_brain* ud = (lv_brain*)luaL_checkudata(L, 1, LV_BRAIN_MT);
@@ -934,6 +933,8 @@ static const luaL_Reg lv_brain_methods[] = {
     {"rbf_count", lv_brain_rbf_count},
     {"save", lv_brain_save},
     {"save_string", lv_brain_save_string},
+    {"save_binary", lv_brain_save_binary},
+    {"save_binary_string", lv_brain_save_binary_string},
     {"close", lv_brain_close},
     {NULL, NULL},
 };

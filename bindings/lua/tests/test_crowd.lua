@@ -1,5 +1,6 @@
 -- Many agents from Lua: a batch gives the same actions as agent:update in order, bodies of one
--- brain share what they learn, a brain's save round-trips, bad input refuses the whole batch.
+-- brain share what they learn, a brain's save (XML or binary) round-trips, bad input refuses the
+-- whole batch.
 local T = require "helpers"
 local verve = require "verve"
 
@@ -84,4 +85,32 @@ T.check("bodies of one brain share what they learn; its save loads as a brain an
   brain:close()
   teacher:update(1, { continuous = { 0.5 } }, 0.1) -- the body keeps the brain alive
   T.expect_error("the brain is closed", brain.body, brain)
+end)
+
+T.check("a brain's binary save loads as a brain and as an agent, an agent's as a brain", function()
+  local brain = verve.brain { discrete = { 3 }, continuous = { {} }, actions = 2, seed = 4 }
+  local bodies = { brain:body(), brain:body() }
+  for step = 1, 200 do
+    bodies[step % 2 + 1]:update(step % 5 == 0 and 1 or 0, { discrete = { step % 3 + 1 }, continuous = { math.sin(step) } }, 0.1)
+  end
+  local bytes = brain:save_binary_string()
+  assert(bytes:sub(1, 8) == "VERVEBIN", "starts with the binary magic")
+  assert(#bytes < #brain:save_string(), "smaller than the XML")
+  local copy = verve.load_brain_string(bytes)
+  assert(copy:save_binary_string() == bytes and copy:save_string() == brain:save_string())
+  local agent = verve.load_string(bytes)
+  assert(verve.load_brain_string(agent:save_binary_string()):save_binary_string() == bytes)
+  assert(verve.load_brain_string(bodies[1]:save_binary_string()):save_binary_string() == bytes)
+  local path = T.temp_path()
+  brain:save_binary(path)
+  assert(verve.load_brain(path):save_binary_string() == bytes)
+  assert(verve.load(path):rbf_count() == brain:rbf_count())
+  os.remove(path)
+  T.expect_library_error("load_brain_string", verve.load_brain_string, bytes:sub(1, 40))
+  local damaged = bytes:sub(1, 99) .. string.char((bytes:byte(100) + 1) % 256) .. bytes:sub(101)
+  local ok, err = pcall(verve.load_brain_string, damaged)
+  assert(not ok and tostring(err):find("checksum"), tostring(err))
+  T.expect_library_error("save_binary", brain.save_binary, brain, "/nonexistent/dir/brain.bin")
+  brain:close()
+  T.expect_error("the brain is closed", brain.save_binary_string, brain)
 end)

@@ -134,6 +134,12 @@ namespace Verve.Native
         [DllImport(Library, CallingConvention = CallingConvention.Cdecl)]
         internal static extern ResultCode verve_brain_load_memory(byte* data, UIntPtr size, out IntPtr brain);
 
+        [DllImport(Library, CallingConvention = CallingConvention.Cdecl)]
+        internal static extern ResultCode verve_brain_save_binary(BrainHandle brain, byte* path);
+
+        [DllImport(Library, CallingConvention = CallingConvention.Cdecl)]
+        internal static extern ResultCode verve_brain_save_memory_binary(BrainHandle brain, byte* buffer, ref UIntPtr size);
+
         // Many agents in one call (Verve's own thread pool: host callbacks are not bound here).
         [DllImport(Library, CallingConvention = CallingConvention.Cdecl)]
         internal static extern ResultCode verve_batch_desc_default(verve_batch_desc* desc);
