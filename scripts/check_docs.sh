@@ -30,7 +30,9 @@ doc() {
   in_doc "$1" "$2" || return 0
   local run=${3:-$2}
   echo "== $1: $run"
-  if ! bash -c "$run" >"$scratch/log" 2>&1; then
+  # A bound on every command: a documented command that hangs (an engine waiting on something
+  # missing) fails the check instead of stalling CI.
+  if ! timeout 900 bash -c "$run" >"$scratch/log" 2>&1; then
     tail -n 30 "$scratch/log"
     echo "check_docs: FAILED ($1): $run" >&2
     failures=$((failures + 1))
