@@ -155,9 +155,10 @@ TEST_F(SaveEdgeCases, LoadingAFifoIsRefusedWithoutBlocking) {
 TEST_F(SaveEdgeCases, LoadingADeviceIsRefused) {
     for (const char* device : {"/dev/zero", "/dev/null", "/dev/urandom"}) {
         const int status = inChild([&] {
-            // If it reads /dev/zero, fail in the child, not the machine. Not under AddressSanitizer,
-            // whose shadow memory needs far more address space (the child's timeout still holds).
-#if !defined(__SANITIZE_ADDRESS__)
+            // If it reads /dev/zero, fail in the child, not the machine. Not under Address- or
+            // ThreadSanitizer, whose shadow memory needs far more address space (the child's timeout
+            // still holds).
+#if !defined(__SANITIZE_ADDRESS__) && !defined(__SANITIZE_THREAD__)
             const rlimit memory{1u << 30, 1u << 30};
             ::setrlimit(RLIMIT_AS, &memory);
 #endif
