@@ -84,9 +84,8 @@ std::uint32_t StateRepresentation::addFeature(std::uint64_t key, const float* ce
         reserveRoom(added->features, added->features.size() + 1);
         reserveRoom(added->centres, added->centres.size() + std::size_t(numContinuous_) * kScanLanes);
         if (added->bounds.empty()) added->bounds.assign(std::size_t(numContinuous_) * 2, 0.0f);
-        if (added->features.size() % (kScanLanes * kScanLanes) == 0) {
-            reserveRoom(added->blockBounds, added->blockBounds.size() + boundsGroupFloats());
-        }
+        const std::size_t count = added->features.size() + 1;
+        if (count > kReadWhole) reserveRoom(added->blockBounds, groupsFor(count) * boundsGroupFloats());
     } catch (...) {
         // Undo the empty entries just made (a cell or array that existed before is never empty).
         auto c = array.cells.find(hash);
@@ -98,28 +97,46 @@ std::uint32_t StateRepresentation::addFeature(std::uint64_t key, const float* ce
     const std::uint32_t index = featureCount_++;
     const std::size_t lane = cell.features.size() % kScanLanes;
     if (lane == 0) cell.centres.resize(cell.centres.size() + std::size_t(numContinuous_) * kScanLanes, 0.0f);
-    if (cell.features.size() % (kScanLanes * kScanLanes) == 0) {
-        cell.blockBounds.resize(cell.blockBounds.size() + boundsGroupFloats(), 0.0f);
-    }
     float* block = cell.centres.data() + cell.centres.size() - std::size_t(numContinuous_) * kScanLanes;
     for (std::uint32_t d = 0; d < numContinuous_; ++d) block[d * kScanLanes + lane] = centre[d];
-    updateBounds(cell.bounds.data(), cell.bounds.data() + 1, 2, centre, cell.features.empty());
-    updateBlockBounds(cell, cell.features.size(), centre);
+    updateBounds(cell.bounds.data(), cell.bounds.data() + 1, 2, centre, 1, cell.features.empty());
     cell.features.push_back(index);
+    const std::size_t count = cell.features.size();
+    if (count > kReadWhole) {  // within the capacity reserved above
+        if (cell.blockBounds.empty()) {
+            rebuildBlockBounds(cell);
+        } else {
+            cell.blockBounds.resize(groupsFor(count) * boundsGroupFloats(), 0.0f);
+            updateBlockBounds(cell, count - 1);
+        }
+    }
     return index;
 }
 
-void StateRepresentation::updateBounds(float* lo, float* hi, std::size_t step, const float* centre, bool first) const {
+void StateRepresentation::updateBounds(float* lo, float* hi, std::size_t step, const float* centre,
+                                       std::size_t centreStep, bool first) const {
     for (std::uint32_t d = 0; d < numContinuous_; ++d) {
-        lo[d * step] = first ? centre[d] : std::min(lo[d * step], centre[d]);
-        hi[d * step] = first ? centre[d] : std::max(hi[d * step], centre[d]);
+        const float x = centre[d * centreStep];
+        lo[d * step] = first ? x : std::min(lo[d * step], x);
+        hi[d * step] = first ? x : std::max(hi[d * step], x);
     }
 }
 
-void StateRepresentation::updateBlockBounds(Cell& c, std::size_t rbf, const float* centre) const {
+void StateRepresentation::updateBlockBounds(Cell& c, std::size_t rbf) const {
     const std::size_t block = rbf / kScanLanes;
     float* lo = c.blockBounds.data() + (block / kScanLanes) * boundsGroupFloats() + block % kScanLanes;
-    updateBounds(lo, lo + kScanLanes, 2 * kScanLanes, centre, rbf % kScanLanes == 0);
+    const float* centre = c.centres.data() + block * numContinuous_ * kScanLanes + rbf % kScanLanes;
+    updateBounds(lo, lo + kScanLanes, 2 * kScanLanes, centre, kScanLanes, rbf % kScanLanes == 0);
+}
+
+void StateRepresentation::rebuildBlockBounds(Cell& c) const {
+    const std::size_t count = c.features.size();
+    if (count <= kReadWhole) {
+        c.blockBounds.clear();
+        return;
+    }
+    c.blockBounds.assign(groupsFor(count) * boundsGroupFloats(), 0.0f);
+    for (std::size_t i = 0; i < count; ++i) updateBlockBounds(c, i);
 }
 
 void StateRepresentation::features(std::vector<std::uint64_t>& keys, std::vector<float>& centres) const {
@@ -169,7 +186,7 @@ void StateRepresentation::finishLattice() {
     const std::uint32_t bits = std::max<std::uint32_t>(1, 64 / std::max<std::uint32_t>(numContinuous_, 1));
     std::vector<std::pair<std::uint64_t, std::uint32_t>> order;
     std::vector<std::uint32_t> features;
-    std::vector<float> centres, centre(numContinuous_);
+    std::vector<float> centres;
     for (auto& [key, array] : arrays_) {
         for (auto& entry : array.cells) {
             Cell& cell = entry.second;
@@ -194,11 +211,10 @@ void StateRepresentation::finishLattice() {
                 const float* src = centres.data() + (from / kScanLanes) * numContinuous_ * kScanLanes;
                 float* dst = cell.centres.data() + (i / kScanLanes) * numContinuous_ * kScanLanes;
                 for (std::uint32_t d = 0; d < numContinuous_; ++d) {
-                    centre[d] = src[d * kScanLanes + from % kScanLanes];
-                    dst[d * kScanLanes + i % kScanLanes] = centre[d];
+                    dst[d * kScanLanes + i % kScanLanes] = src[d * kScanLanes + from % kScanLanes];
                 }
-                updateBlockBounds(cell, i, centre.data());
             }
+            rebuildBlockBounds(cell);
             // The lattice is complete: no cell grows again, so none keeps spare capacity.
             cell.features.shrink_to_fit();
             cell.centres.shrink_to_fit();
@@ -253,7 +269,7 @@ bool StateRepresentation::scanCell(const Cell& c, const ScanParams& params, std:
     const std::size_t blocks = (count + kScanLanes - 1) / kScanLanes;
     // A cell of a few blocks, or one wholly within the cutoff, is read whole; otherwise runs of
     // consecutive blocks within reach, each in one scan.
-    if (blocks <= 2 || farthestDistance2(c.bounds.data(), params.point) < params.cutoff2 * 0.9999f) {
+    if (count <= kReadWhole || farthestDistance2(c.bounds.data(), params.point) < params.cutoff2 * 0.9999f) {
         out.resize(n + kernels_->scan(params, c.centres.data(), c.features.data(), count, out.data() + n, nearOne));
         return nearOne;
     }

@@ -79,10 +79,16 @@ private:
     // shorter way on circular sensors; and the same to the box's farthest corner.
     float boxDistance2(const float* bounds, const float* point) const;
     float farthestDistance2(const float* bounds, const float* point) const;
-    // Widens a box (lowest of dimension d at lo[d * step], highest at hi[d * step]) to a centre.
-    void updateBounds(float* lo, float* hi, std::size_t step, const float* centre, bool first) const;
-    void updateBlockBounds(Cell& c, std::size_t rbf, const float* centre) const;
+    // A cell of up to 2 blocks is always read whole, and keeps no block boxes.
+    static constexpr std::size_t kReadWhole = 2 * kScanLanes;
+    static std::size_t groupsFor(std::size_t rbfs) { return (rbfs + kScanLanes * kScanLanes - 1) / (kScanLanes * kScanLanes); }
     std::size_t boundsGroupFloats() const { return std::size_t(numContinuous_) * 2 * kScanLanes; }
+    // Widens a box (lowest of dimension d at lo[d * step], highest at hi[d * step]) to a centre
+    // (dimension d at centre[d * centreStep]).
+    void updateBounds(float* lo, float* hi, std::size_t step, const float* centre, std::size_t centreStep,
+                      bool first) const;
+    void updateBlockBounds(Cell& c, std::size_t rbf) const;  // to the cell's RBF number rbf
+    void rebuildBlockBounds(Cell& c) const;
     std::uint64_t discreteKey(const std::int32_t* discrete) const;
     void cellCoords(const float* point, std::int32_t* coords) const;
     std::uint64_t cellHash(const std::int32_t* coords) const;
