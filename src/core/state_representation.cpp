@@ -267,8 +267,8 @@ bool StateRepresentation::scanCell(const Cell& c, const ScanParams& params, std:
     out.resize(n + (count + kScanLanes - 1) / kScanLanes * kScanLanes);  // capacity is reused once warmed up
     bool nearOne = false;
     const std::size_t blocks = (count + kScanLanes - 1) / kScanLanes;
-    // A cell of a few blocks, or one wholly within the cutoff, is read whole; otherwise runs of
-    // consecutive blocks within reach, each in one scan.
+    // A cell of a few blocks (kReadWhole), or one wholly within the cutoff, is read whole;
+    // otherwise runs of consecutive blocks within reach, each in one scan.
     if (count <= kReadWhole || farthestDistance2(c.bounds.data(), params.point) < params.cutoff2 * 0.9999f) {
         out.resize(n + kernels_->scan(params, c.centres.data(), c.features.data(), count, out.data() + n, nearOne));
         return nearOne;
