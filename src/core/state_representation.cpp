@@ -24,8 +24,10 @@ StateRepresentation::StateRepresentation(const AgentDescriptor& desc)
       resolution_(desc.resolution),
       sigma_(2.0f / static_cast<float>(std::max<std::uint32_t>(desc.resolution, 1))),
       // Cells at least 4 sigma wide that tile [-1, 1] exactly, so that the neighbours of a cell
-      // hold every RBF within the cutoff, also across the seam of a circular sensor.
-      cellsPerDim_(std::max<std::int32_t>(1, static_cast<std::int32_t>(desc.resolution / 4))),
+      // hold every RBF within the cutoff, also across the seam of a circular sensor. With 3 or
+      // fewer per dimension a lookup reads (nearly) all cells anyway: one cell holds the array,
+      // read as one stream, and its blocks' boxes do the skipping.
+      cellsPerDim_(desc.resolution / 4 <= 3 ? 1 : static_cast<std::int32_t>(desc.resolution / 4)),
       cellSize_(2.0f / static_cast<float>(cellsPerDim_)),
       maxNeighbours_(1),
       keyCount_(1),
