@@ -266,12 +266,13 @@ bool StateRepresentation::scanCell(const Cell& c, const ScanParams& params, std:
     if (boxDistance2(c.bounds.data(), params.point) > reach) return false;
     const std::size_t n = out.size();
     const std::size_t count = c.features.size();
-    out.resize(n + (count + kScanLanes - 1) / kScanLanes * kScanLanes);  // capacity is reused once warmed up
     bool nearOne = false;
     const std::size_t blocks = (count + kScanLanes - 1) / kScanLanes;
     // A cell of a few blocks (kReadWhole), or one wholly within the cutoff, is read whole;
-    // otherwise runs of consecutive blocks within reach, each in one scan.
+    // otherwise runs of consecutive blocks within reach, each in one scan. The output grows by
+    // whole blocks before each scan (its capacity is reused once warmed up).
     if (count <= kReadWhole || farthestDistance2(c.bounds.data(), params.point) < params.cutoff2 * 0.9999f) {
+        out.resize(n + blocks * kScanLanes);
         out.resize(n + kernels_->scan(params, c.centres.data(), c.features.data(), count, out.data() + n, nearOne));
         return nearOne;
     }
@@ -296,6 +297,7 @@ bool StateRepresentation::scanCell(const Cell& c, const ScanParams& params, std:
                 bits &= length + start >= 64 ? 0 : ~std::uint64_t(0) << (start + length);
                 const std::size_t b = w + start;
                 const std::size_t first = b * kScanLanes, last = std::min(count, (b + length) * kScanLanes);
+                out.resize(written + length * kScanLanes);
                 written += kernels_->scan(params, c.centres.data() + b * blockFloats, c.features.data() + first,
                                           last - first, out.data() + written, nearOne);
             }
