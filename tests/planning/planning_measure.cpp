@@ -42,6 +42,11 @@ int main(int argc, char** argv) {
             else if (key == "factor") d.curiosityFactor = v;
             else if (key == "tauModel") d.tauModel = v;
             else if (key == "multiplier") d.policyMultiplier = v;
+            else if (key == "tauDiscount") d.tauDiscount = v;
+            else if (key == "bound") d.policyWeightBound = v;
+            else if (key == "tauValue") d.tauValue = v;
+            else if (key == "tauEligibility") d.tauEligibility = v;
+            else if (key == "resolution") d.resolution = static_cast<std::uint32_t>(v);
             else std::fprintf(stderr, "unknown key %s\n", key.c_str());
         }
     };
