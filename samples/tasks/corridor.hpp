@@ -1,7 +1,7 @@
 // A long continuous corridor (a long-horizon task for planning): the agent starts at the left end
 // of `cells` cells and must walk to the right end; every step costs -1, reaching the end pays +1
 // and ends the trial; cut off after 2000 steps. One continuous sensor (the position, resolution 10),
-// actions left, right, stay. Optimum: cells - 1 steps.
+// actions left, right, stay, gamma 0.99. Optimum: cells - 1 steps.
 #pragma once
 #include <cstdint>
 #include <string>

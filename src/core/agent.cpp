@@ -86,6 +86,7 @@ void Agent::Impl::plan(const StepConstants& k) {
     p.traceDecay = k.traceDecay;
     p.rates = k.rates;
     p.valueBound = k.valueBound;
+    p.onlyPlansThatEnd = !desc.continuousSensors.empty() && desc.curiosity == CuriosityMode::None;
     const core::PlanResult result = planner.run(p, current, weights, rep, model, rng);
     stats.planningSteps = result.steps;
     stats.curiosityReward = result.curiosity;

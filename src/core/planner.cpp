@@ -18,8 +18,26 @@ void Planner::reserve(std::uint32_t features) {
     td_.reserve(features, StateRepresentation::foundCapacity(features));
 }
 
+bool Planner::reachesTheEnd(const PlanSettings& s, const std::vector<ActiveFeature>& start, const WeightTable& w,
+                            const StateRepresentation& rep, const PredictiveModel& model, Rng rng) {
+    phi_.assign(start.begin(), start.end());
+    float uncertainty = 0.0f;
+    for (std::uint32_t step = 0; step < s.maxSteps && !phi_.empty(); ++step) {
+        float value = 0.0f;
+        const std::uint32_t action = td_.chooseAction(w, phi_, rng, activations_, value);
+        model.predict(w, phi_, action, prediction_);
+        uncertainty = s.accumulate ? uncertainty + prediction_.uncertainty : prediction_.uncertainty;
+        if (uncertainty > s.uncertaintyThreshold) return false;
+        if (prediction_.terminal > 0.5f) return true;
+        rep.find(prediction_.discrete.data(), prediction_.continuous.data(), next_);
+        std::swap(phi_, next_);
+    }
+    return false;
+}
+
 PlanResult Planner::run(const PlanSettings& s, const std::vector<ActiveFeature>& start, WeightTable& w,
                         const StateRepresentation& rep, const PredictiveModel& model, Rng& rng) {
+    if (s.onlyPlansThatEnd && !reachesTheEnd(s, start, w, rep, model, rng)) return PlanResult{};
     PlanResult result;
     td_.clear();
     phi_.assign(start.begin(), start.end());

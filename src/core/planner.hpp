@@ -5,6 +5,13 @@
 // original did, or per step), when the model predicts the end of the trial, or at the step cap,
 // so one plan costs at most maxSteps model queries.
 //
+// With continuous sensors and no curiosity, a plan teaches only if it reaches the end of the trial
+// (a dry run first, then the same trajectory learned): imagined steps that merely walk the known
+// region back up the per-step reward drag the overlapping RBFs of the unvisited states next to it
+// down too, and the optimism that drives plain RL toward new states is lost (docs/planning.md).
+// With discrete features an unvisited state shares nothing with the visited ones, so there every
+// plan teaches, as in the thesis: its backups are what push the agent toward the unexplored.
+//
 // The plan keeps its own eligibility traces, cleared at each plan start: an imagined trajectory
 // must not leak into the real one's credit assignment, and vice versa. Imagined states never
 // allocate RBFs (StateRepresentation::find).
@@ -31,6 +38,7 @@ struct PlanSettings {
     float traceDecay = 0.0f;
     TdRates rates;
     float valueBound = 0.0f;  // TD errors bootstrap only from values within it (td_learner.hpp)
+    bool onlyPlansThatEnd = false;  // learn only from plans that reach the end of the trial
 };
 
 struct PlanResult {
@@ -49,6 +57,11 @@ public:
                    const StateRepresentation& rep, const PredictiveModel& model, Rng& rng);
 
 private:
+    // Whether the plan run() would make reaches a predicted end of the trial (it draws from a copy
+    // of the random stream, so the plan that follows takes the same first steps).
+    bool reachesTheEnd(const PlanSettings& settings, const std::vector<ActiveFeature>& start, const WeightTable& w,
+                       const StateRepresentation& rep, const PredictiveModel& model, Rng rng);
+
     TdLearner td_;
     Prediction prediction_;
     std::vector<ActiveFeature> phi_, next_;  // scratch: the imagined state and its successor

@@ -78,3 +78,29 @@ TEST(PlanningAgent, BadInputLeavesThePlannerUntouched) {
     bad.discretePrediction = static_cast<DiscretePrediction>(9);
     EXPECT_THROW(Agent{bad}, Error);
 }
+
+// With continuous sensors and no curiosity a plan teaches only if it reaches the end of the trial:
+// in the corridor's first trial the goal is far beyond any plan, so no plan teaches, and the
+// agent acts exactly as without planning; the same agent with curiosity plans from the start.
+TEST(PlanningAgent, ContinuousPlansTeachOnlyWhenTheyReachTheEnd) {
+    auto env = findTask("corridor-planning")->make(1);
+    AgentDescriptor d = env->agentDescriptor();
+    AgentDescriptor plain = d;
+    plain.planning = false;
+    AgentDescriptor curious = d;
+    curious.curiosity = CuriosityMode::Novelty;
+    Agent planner(d), rl(plain), explorer(curious);
+    Observation obs(d);
+    std::uint32_t planned = 0, curiousPlanned = 0;
+    for (int i = 0; i < 30; ++i) {
+        env->observe(obs);
+        const std::uint32_t a = planner.update(-1.0f, obs, 0.1f);
+        EXPECT_EQ(a, rl.update(-1.0f, obs, 0.1f)) << "step " << i;
+        explorer.update(-1.0f, obs, 0.1f);
+        planned += planner.stats().planningSteps;
+        curiousPlanned += explorer.stats().planningSteps;
+        env->act(a);
+    }
+    EXPECT_EQ(planned, 0u);
+    EXPECT_GT(curiousPlanned, 0u);
+}

@@ -42,22 +42,53 @@ TEST(PlanningLearning, ModelErrorFallsTowardZero) {
     EXPECT_LT(late, 0.01f);  // a deterministic maze is learned exactly (rate 1)
 }
 
-// Known gap (the KnownGap convention: tests/learning/hot_plate_learning_test.cpp; docs/planning.md):
-// the original's continuous planning never reached the goal; ours does in about 90% of late trials
-// over 10 runs (1035 steps over trials 41-50), so "every late trial" is not met, and it is not faster
-// than RL alone. Kept, not weakened.
-TEST(KnownGapPlanningLearning, PlanningWorksWithContinuousSensors) {
-    // The original's continuous planning runs all hit the 10,000-step cap.
-    const LearningCurve c = maze2("maze2-continuous", 4, [](AgentDescriptor& d) {
-        d.planning = true;
-        d.tauModel = 0.0f;
-        d.maxPlanningSteps = 50;
-        // Continuous predictions are never exact: a tight threshold keeps plans where the model
-        // is good (0.5, the default measured on the discrete grids, lets errors compound here).
-        d.planningUncertaintyThreshold = 0.1f;
-    });
+namespace {
+
+// Maze #2 with continuous sensors and planning (<= 50 steps, model rate 1). Continuous predictions
+// are never exact: a tight threshold keeps plans where the model is good (0.5, the default measured
+// on the discrete grids, lets errors compound here).
+void planContinuously(AgentDescriptor& d) {
+    d.planning = true;
+    d.tauModel = 0.0f;
+    d.maxPlanningSteps = 50;
+    d.planningUncertaintyThreshold = 0.1f;
+}
+
+}  // namespace
+
+// The original's continuous planning runs all hit the 10,000-step cap; before plans had to reach the
+// end of the trial to teach (docs/planning.md), ours reached the goal in 90% of late trials (1035
+// steps). Now every late trial of every run does (10 runs, seed 1: 459 steps over trials 41-50).
+TEST(PlanningLearning, PlanningWorksWithContinuousSensors) {
+    const LearningCurve c = maze2("maze2-continuous", 10, planContinuously);
     const double late = windowMean(c.steps, 41, 51);
     std::printf("continuous maze2 with planning, trials 41-50: %.1f steps\n", late);
     EXPECT_LT(late, 3000.0);
     EXPECT_GE(windowMean(c.terminal, 41, 51), 0.99);  // every late trial reaches the goal
+}
+
+// A long horizon, -1 per step until the goal 39 steps away (10 runs, seed 1): plain RL learns the
+// optimum (39.0 steps on trials 41-50, every run). Planning once froze the start region at the value
+// floor (30% of late trials reached the goal); now it reaches the goal in every late trial, in the
+// same 39.0 steps.
+TEST(PlanningLearning, PlanningMatchesRlOnALongCorridor) {
+    const LearningCurve planning = runExperiment(findTask("corridor-planning")->make, 10, 51, 1, {}, 2);
+    const LearningCurve rl = runExperiment(findTask("corridor")->make, 10, 51, 1, {}, 2);
+    const double planned = windowMean(planning.steps, 41, 51);
+    const double plain = windowMean(rl.steps, 41, 51);
+    std::printf("corridor trials 41-50: planning %.1f steps (%.0f%% at the goal), no planning %.1f\n", planned,
+                100.0 * windowMean(planning.success, 41, 51), plain);
+    EXPECT_GE(windowMean(planning.success, 41, 51), 0.99);  // every run, every late trial
+    EXPECT_LE(planned, plain);
+}
+
+// Known gap (the KnownGap convention: tests/learning/hot_plate_learning_test.cpp; docs/planning.md):
+// on the continuous maze planning reaches the goal every time but is not faster than RL alone, and
+// over 4 x 10 runs (seeds 1, 11, 21, 31) 6% slower on trials 41-50 (396 vs 372 steps; seed 1: 459 vs
+// 437). The bar is "no slower than RL alone". Kept, not weakened.
+TEST(KnownGapPlanningLearning, ContinuousPlanningNoSlowerThanRl) {
+    const double planned = windowMean(maze2("maze2-continuous", 10, planContinuously).steps, 41, 51);
+    const double plain = windowMean(maze2("maze2-continuous", 10).steps, 41, 51);
+    std::printf("continuous maze2 trials 41-50: planning %.1f, no planning %.1f steps\n", planned, plain);
+    EXPECT_LE(planned, plain);
 }
