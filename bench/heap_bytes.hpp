@@ -6,7 +6,10 @@
 
 #if defined(__GLIBC__)
 #include <malloc.h>
-inline std::size_t heapBytesInUse() { return mallinfo2().uordblks; }
+inline std::size_t heapBytesInUse() {
+    const auto m = mallinfo2();
+    return m.uordblks + m.hblkhd;  // small blocks, and the large ones glibc maps on their own
+}
 #else
 inline std::size_t heapBytesInUse() { return 0; }
 #endif

@@ -108,12 +108,13 @@ void Agent::Impl::recordProbabilities(const std::uint8_t* allowed) {
     for (float& p : probabilities) p /= count;
 }
 
-void Agent::Impl::reserveFor(std::uint32_t features) {
+void Agent::Impl::reserveFor(std::uint32_t features, std::size_t active) {
+    // The lookup has filled `current` already (allocating, if at all, before any change), and
+    // `previous` only ever swaps buffers with it: scratch follows the neighbourhood, not the RBFs.
     rep.reserve(features);
     weights.reserve(features);
-    core::reserveRoom(current, core::StateRepresentation::foundCapacity(features));
-    core::reserveRoom(previous, core::StateRepresentation::foundCapacity(features));
-    td.reserve(features);
+    core::reserveRoom(current, active);
+    td.reserve(features, active);
     if (desc.planning) planner.reserve(features);
 }
 
@@ -169,7 +170,7 @@ std::uint32_t Agent::update(float reward, ObservationView obs, float dt, ActionM
     bool grows = !covered && s.learning && s.desc.allocation == RbfAllocation::Dynamic;
     const bool overBudget = grows && s.rep.featureCount() >= s.desc.rbfBudget();
     grows = grows && !overBudget;
-    s.reserveFor(s.rep.featureCount() + (grows ? 1u : 0u));
+    s.reserveFor(s.rep.featureCount() + (grows ? 1u : 0u), s.current.size() + (grows ? 1u : 0u));
     if (grows) {
         s.current.push_back(core::ActiveFeature{s.rep.add(obs.discrete, s.normalized.data()), 1.0f});
         s.weights.resize(s.rep.featureCount());

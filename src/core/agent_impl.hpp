@@ -38,9 +38,10 @@ struct Agent::Impl {
     void learnModelTerminal(float reward);
     void plan(const StepConstants& k);
     void recordModelError(float error);
-    // Room for everything an update with `features` RBFs may need (scratch, traces, weights).
-    // Called before anything changes: an allocation failure then leaves the agent as it was.
-    void reserveFor(std::uint32_t features);
+    // Room for everything an update with `features` RBFs, `active` of them in its lookup, may
+    // need (scratch, traces, weights). Called before anything changes: an allocation failure
+    // then leaves the agent as it was.
+    void reserveFor(std::uint32_t features, std::size_t active);
     // The observed reward within [-1, 1]; a clamp is counted and reported (once per agent).
     float clampedReward(float reward);
     // An update that needed an RBF the budget did not allow: counted and reported (once).

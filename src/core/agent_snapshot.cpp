@@ -55,6 +55,7 @@ std::unique_ptr<Agent::Impl> restoreAgent(const AgentSnapshot& snap) {
         }
         s.rep.addFeature(snap.featureKeys[i], snap.centres.data() + i * nc);
     }
+    if (snap.descriptor.allocation == RbfAllocation::Full) s.rep.finishLattice();  // as it was made
     s.weights.resize(static_cast<std::uint32_t>(count));
     s.weights.data() = snap.weights;
 

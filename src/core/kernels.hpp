@@ -39,6 +39,10 @@ struct Kernels {
     // rounded up to kScanLanes. Sets `nearOne` when one lies within a width.
     std::size_t (*scan)(const ScanParams& p, const float* centres, const std::uint32_t* features,
                         std::size_t count, ActiveFeature* out, bool& nearOne);
+    // For `count` boxes stored in groups of kScanLanes, [group][dimension][lowest lanes, highest
+    // lanes], sets bit b % kScanLanes of masks[b / kScanLanes] when box b lies within squared
+    // distance `reach2` of the point (the shorter way on circular sensors), and clears the others.
+    void (*boxesWithin)(const ScanParams& p, const float* boxes, std::size_t count, float reach2, std::uint8_t* masks);
     // sums[k] = sum over phi of row(phi.index)[k] * phi.activation, for k < columns <= stride.
     void (*rowSums)(const float* weights, std::uint32_t stride, const ActiveFeature* phi, std::size_t n,
                     std::uint32_t columns, float* sums);

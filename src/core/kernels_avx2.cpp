@@ -94,6 +94,24 @@ std::size_t scan(const ScanParams& p, const float* centres, const std::uint32_t*
     return n;
 }
 
+void boxesWithin(const ScanParams& p, const float* boxes, std::size_t count, float reach2, std::uint8_t* masks) {
+    const __m256 zero = _mm256_setzero_ps(), two = _mm256_set1_ps(2.0f), reach = _mm256_set1_ps(reach2);
+    for (std::size_t first = 0; first < count; first += kScanLanes, ++masks) {
+        __m256 d2 = zero;
+        for (std::uint32_t d = 0; d < p.dims; ++d, boxes += 2 * kScanLanes) {
+            const __m256 lo = _mm256_loadu_ps(boxes), hi = _mm256_loadu_ps(boxes + kScanLanes);
+            const __m256 x = _mm256_set1_ps(p.point[d]);
+            auto gap = [&](__m256 at) { return _mm256_max_ps(_mm256_max_ps(_mm256_sub_ps(lo, at), _mm256_sub_ps(at, hi)), zero); };
+            __m256 g = gap(x);
+            if (p.circular[d]) g = _mm256_min_ps(g, _mm256_min_ps(gap(_mm256_sub_ps(x, two)), gap(_mm256_add_ps(x, two))));
+            d2 = _mm256_fmadd_ps(g, g, d2);
+        }
+        const std::size_t remaining = count - first;
+        const int valid = remaining >= kScanLanes ? 0xff : (1 << remaining) - 1;
+        *masks = static_cast<std::uint8_t>(_mm256_movemask_ps(_mm256_cmp_ps(d2, reach, _CMP_LE_OQ)) & valid);
+    }
+}
+
 void rowSums(const float* weights, std::uint32_t stride, const ActiveFeature* phi, std::size_t n,
              std::uint32_t columns, float* sums) {
     const __m256i laneNumbers = _mm256_setr_epi32(0, 1, 2, 3, 4, 5, 6, 7);
@@ -130,7 +148,7 @@ struct Quad4 {
 }  // namespace
 
 const Kernels& avx2KernelTable() {
-    static const Kernels k{"avx2+fma", scan, rowSums, trainDecay<Quad4>};
+    static const Kernels k{"avx2+fma", scan, boxesWithin, rowSums, trainDecay<Quad4>};
     return k;
 }
 

@@ -39,6 +39,23 @@ std::size_t scan(const ScanParams& p, const float* centres, const std::uint32_t*
     return n;
 }
 
+void boxesWithin(const ScanParams& p, const float* boxes, std::size_t count, float reach2, std::uint8_t* masks) {
+    for (std::size_t first = 0; first < count; first += kScanLanes, ++masks) {
+        Lanes d2 = Lanes::Zero();
+        for (std::uint32_t d = 0; d < p.dims; ++d, boxes += 2 * kScanLanes) {
+            const Eigen::Map<const Lanes> lo(boxes), hi(boxes + kScanLanes);
+            auto gap = [&](float at) { return (lo - at).max(at - hi).max(0.0f); };
+            Lanes g = gap(p.point[d]);
+            if (p.circular[d]) g = g.min(gap(p.point[d] - 2.0f)).min(gap(p.point[d] + 2.0f));
+            d2 += g.square();
+        }
+        const std::size_t lanes = std::min<std::size_t>(kScanLanes, count - first);
+        std::uint8_t mask = 0;
+        for (std::size_t l = 0; l < lanes; ++l) mask |= static_cast<std::uint8_t>((d2[l] <= reach2 ? 1u : 0u) << l);
+        *masks = mask;
+    }
+}
+
 // Four running sums of one column over the features: independent chains, so the adds overlap.
 float columnSum(const float* weights, std::uint32_t stride, const ActiveFeature* phi, std::size_t n,
                 std::uint32_t column) {
@@ -81,7 +98,7 @@ struct Quad4 {
 }  // namespace
 
 const Kernels& portableKernels() {
-    static const Kernels k{"portable", scan, rowSums, trainDecay<Quad4>};
+    static const Kernels k{"portable", scan, boxesWithin, rowSums, trainDecay<Quad4>};
     return k;
 }
 

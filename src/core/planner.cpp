@@ -15,7 +15,7 @@ Planner::Planner(const AgentDescriptor& desc) : td_(desc.numActions, desc.traceT
 void Planner::reserve(std::uint32_t features) {
     reserveRoom(phi_, StateRepresentation::foundCapacity(features));
     reserveRoom(next_, StateRepresentation::foundCapacity(features));
-    td_.reserve(features);
+    td_.reserve(features, StateRepresentation::foundCapacity(features));
 }
 
 bool Planner::reachesTheEnd(const PlanSettings& s, const std::vector<ActiveFeature>& start, const WeightTable& w,

@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstring>
 
 #include "verve/error.hpp"
 
@@ -23,14 +24,21 @@ StateRepresentation::StateRepresentation(const AgentDescriptor& desc)
       resolution_(desc.resolution),
       sigma_(2.0f / static_cast<float>(std::max<std::uint32_t>(desc.resolution, 1))),
       // Cells at least 4 sigma wide that tile [-1, 1] exactly, so that the neighbours of a cell
-      // hold every RBF within the cutoff, also across the seam of a circular sensor.
-      cellsPerDim_(std::max<std::int32_t>(1, static_cast<std::int32_t>(desc.resolution / 4))),
+      // hold every RBF within the cutoff, also across the seam of a circular sensor. With 3 or
+      // fewer per dimension a lookup reads (nearly) all cells anyway: one cell holds the array,
+      // read as one stream, and its blocks' boxes do the skipping.
+      cellsPerDim_(desc.resolution / 4 <= 3 ? 1 : static_cast<std::int32_t>(desc.resolution / 4)),
       cellSize_(2.0f / static_cast<float>(cellsPerDim_)),
+      maxNeighbours_(1),
       keyCount_(1),
       activationSum_(1.0f),
       kernels_(&kernels()) {
     for (const auto& s : desc.continuousSensors) circular_.push_back(s.circular ? 1 : 0);
     for (auto c : discreteCounts_) keyCount_ *= c;
+    for (std::uint32_t d = 0; d < numContinuous_ && maxNeighbours_ < (1ULL << 40); ++d) maxNeighbours_ *= 3;
+    double cells = 1.0;
+    for (std::uint32_t d = 0; d < numContinuous_; ++d) cells *= cellsPerDim_;
+    exactCellKeys_ = cells < 0x1p63;
     activationSum_ = std::pow(2.5f, static_cast<float>(numContinuous_));
     coords_.resize(numContinuous_);
     neighbour_.resize(numContinuous_);
@@ -56,6 +64,11 @@ void StateRepresentation::cellCoords(const float* point, std::int32_t* coords) c
 }
 
 std::uint64_t StateRepresentation::cellHash(const std::int32_t* coords) const {
+    if (exactCellKeys_) {  // the coordinates in mixed radix: no two cells share a key
+        std::uint64_t key = 0;
+        for (std::uint32_t d = numContinuous_; d-- > 0;) key = key * std::uint64_t(cellsPerDim_) + std::uint32_t(coords[d]);
+        return key;
+    }
     // Distinct cells may collide: that only adds candidates, which the distance test rejects.
     std::uint64_t h = 0x2545f4914f6cdd1dULL;
     for (std::uint32_t d = 0; d < numContinuous_; ++d) h = mix(h, static_cast<std::uint32_t>(coords[d]));
@@ -73,6 +86,8 @@ std::uint32_t StateRepresentation::addFeature(std::uint64_t key, const float* ce
         reserveRoom(added->features, added->features.size() + 1);
         reserveRoom(added->centres, added->centres.size() + std::size_t(numContinuous_) * kScanLanes);
         if (added->bounds.empty()) added->bounds.assign(std::size_t(numContinuous_) * 2, 0.0f);
+        const std::size_t count = added->features.size() + 1;
+        if (count > kReadWhole) reserveRoom(added->blockBounds, groupsFor(count) * boundsGroupFloats());
     } catch (...) {
         // Undo the empty entries just made (a cell or array that existed before is never empty).
         auto c = array.cells.find(hash);
@@ -86,13 +101,44 @@ std::uint32_t StateRepresentation::addFeature(std::uint64_t key, const float* ce
     if (lane == 0) cell.centres.resize(cell.centres.size() + std::size_t(numContinuous_) * kScanLanes, 0.0f);
     float* block = cell.centres.data() + cell.centres.size() - std::size_t(numContinuous_) * kScanLanes;
     for (std::uint32_t d = 0; d < numContinuous_; ++d) block[d * kScanLanes + lane] = centre[d];
-    for (std::uint32_t d = 0; d < numContinuous_; ++d) {
-        const bool first = cell.features.empty();
-        cell.bounds[2 * d] = first ? centre[d] : std::min(cell.bounds[2 * d], centre[d]);
-        cell.bounds[2 * d + 1] = first ? centre[d] : std::max(cell.bounds[2 * d + 1], centre[d]);
-    }
+    updateBounds(cell.bounds.data(), cell.bounds.data() + 1, 2, centre, 1, cell.features.empty());
     cell.features.push_back(index);
+    const std::size_t count = cell.features.size();
+    if (count > kReadWhole) {  // within the capacity reserved above
+        if (cell.blockBounds.empty()) {
+            rebuildBlockBounds(cell);
+        } else {
+            cell.blockBounds.resize(groupsFor(count) * boundsGroupFloats(), 0.0f);
+            updateBlockBounds(cell, count - 1);
+        }
+    }
     return index;
+}
+
+void StateRepresentation::updateBounds(float* lo, float* hi, std::size_t step, const float* centre,
+                                       std::size_t centreStep, bool first) const {
+    for (std::uint32_t d = 0; d < numContinuous_; ++d) {
+        const float x = centre[d * centreStep];
+        lo[d * step] = first ? x : std::min(lo[d * step], x);
+        hi[d * step] = first ? x : std::max(hi[d * step], x);
+    }
+}
+
+void StateRepresentation::updateBlockBounds(Cell& c, std::size_t rbf) const {
+    const std::size_t block = rbf / kScanLanes;
+    float* lo = c.blockBounds.data() + (block / kScanLanes) * boundsGroupFloats() + block % kScanLanes;
+    const float* centre = c.centres.data() + block * numContinuous_ * kScanLanes + rbf % kScanLanes;
+    updateBounds(lo, lo + kScanLanes, 2 * kScanLanes, centre, kScanLanes, rbf % kScanLanes == 0);
+}
+
+void StateRepresentation::rebuildBlockBounds(Cell& c) const {
+    const std::size_t count = c.features.size();
+    if (count <= kReadWhole) {
+        c.blockBounds.clear();
+        return;
+    }
+    c.blockBounds.assign(groupsFor(count) * boundsGroupFloats(), 0.0f);
+    for (std::size_t i = 0; i < count; ++i) updateBlockBounds(c, i);
 }
 
 void StateRepresentation::features(std::vector<std::uint64_t>& keys, std::vector<float>& centres) const {
@@ -133,11 +179,48 @@ void StateRepresentation::allocateFullLattice() {
             }
         }
     }
-    // The lattice is complete: no cell grows again, so none keeps spare capacity.
+    finishLattice();
+}
+
+void StateRepresentation::finishLattice() {
+    // Morton order: the lattice indices' bits interleaved, lowest bits first, so that any 2^k
+    // consecutive RBFs of a cell form a box about 2 lattice points wide in k dimensions.
+    const std::uint32_t bits = std::max<std::uint32_t>(1, 64 / std::max<std::uint32_t>(numContinuous_, 1));
+    std::vector<std::pair<std::uint64_t, std::uint32_t>> order;
+    std::vector<std::uint32_t> features;
+    std::vector<float> centres;
     for (auto& [key, array] : arrays_) {
         for (auto& entry : array.cells) {
-            entry.second.features.shrink_to_fit();
-            entry.second.centres.shrink_to_fit();
+            Cell& cell = entry.second;
+            const std::size_t count = cell.features.size();
+            order.clear();
+            for (std::size_t i = 0; i < count; ++i) {
+                const float* block = cell.centres.data() + (i / kScanLanes) * numContinuous_ * kScanLanes;
+                std::uint64_t code = 0;
+                for (std::uint32_t d = 0; d < numContinuous_; ++d) {
+                    const float local = (block[d * kScanLanes + i % kScanLanes] - cell.bounds[2 * d]) / sigma_;
+                    const auto q = static_cast<std::uint64_t>(std::lround(local));
+                    for (std::uint32_t b = 0; b < bits; ++b) code |= ((q >> b) & 1u) << (b * numContinuous_ + d);
+                }
+                order.emplace_back(code, static_cast<std::uint32_t>(i));
+            }
+            std::sort(order.begin(), order.end());
+            features.assign(cell.features.begin(), cell.features.end());
+            centres.assign(cell.centres.begin(), cell.centres.end());
+            for (std::size_t i = 0; i < count; ++i) {
+                const std::size_t from = order[i].second;
+                cell.features[i] = features[from];
+                const float* src = centres.data() + (from / kScanLanes) * numContinuous_ * kScanLanes;
+                float* dst = cell.centres.data() + (i / kScanLanes) * numContinuous_ * kScanLanes;
+                for (std::uint32_t d = 0; d < numContinuous_; ++d) {
+                    dst[d * kScanLanes + i % kScanLanes] = src[d * kScanLanes + from % kScanLanes];
+                }
+            }
+            rebuildBlockBounds(cell);
+            // The lattice is complete: no cell grows again, so none keeps spare capacity.
+            cell.features.shrink_to_fit();
+            cell.centres.shrink_to_fit();
+            cell.blockBounds.shrink_to_fit();
         }
     }
 }
@@ -153,10 +236,10 @@ std::uint32_t StateRepresentation::activate(const std::int32_t* discrete, const 
     return 1;
 }
 
-float StateRepresentation::boxDistance2(const Cell& c, const float* point) const {
+float StateRepresentation::boxDistance2(const float* bounds, const float* point) const {
     float sum = 0.0f;
     for (std::uint32_t d = 0; d < numContinuous_; ++d) {
-        const float lo = c.bounds[2 * d], hi = c.bounds[2 * d + 1];
+        const float lo = bounds[2 * d], hi = bounds[2 * d + 1];
         auto gap = [lo, hi](float x) { return std::max(0.0f, std::max(lo - x, x - hi)); };
         float g = gap(point[d]);
         if (circular_[d]) g = std::min(g, std::min(gap(point[d] - 2.0f), gap(point[d] + 2.0f)));
@@ -165,15 +248,62 @@ float StateRepresentation::boxDistance2(const Cell& c, const float* point) const
     return sum;
 }
 
+float StateRepresentation::farthestDistance2(const float* bounds, const float* point) const {
+    float sum = 0.0f;
+    for (std::uint32_t d = 0; d < numContinuous_; ++d) {
+        // On a circular sensor no centre is farther than 1 the shorter way round.
+        float g = std::max(point[d] - bounds[2 * d], bounds[2 * d + 1] - point[d]);
+        if (circular_[d]) g = 1.0f;
+        sum += g * g;
+    }
+    return sum;
+}
+
 bool StateRepresentation::scanCell(const Cell& c, const ScanParams& params, std::vector<ActiveFeature>& out) const {
     // The margin keeps an RBF whose distance rounds differently in the scan (a box distance is
     // never more than any of its centres' distances).
-    if (boxDistance2(c, params.point) > params.cutoff2 * 1.0001f) return false;
+    const float reach = params.cutoff2 * 1.0001f;
+    if (boxDistance2(c.bounds.data(), params.point) > reach) return false;
     const std::size_t n = out.size();
     const std::size_t count = c.features.size();
-    out.resize(n + (count + kScanLanes - 1) / kScanLanes * kScanLanes);  // capacity is reused once warmed up
     bool nearOne = false;
-    out.resize(n + kernels_->scan(params, c.centres.data(), c.features.data(), count, out.data() + n, nearOne));
+    const std::size_t blocks = (count + kScanLanes - 1) / kScanLanes;
+    // A cell of a few blocks (kReadWhole), or one wholly within the cutoff, is read whole;
+    // otherwise runs of consecutive blocks within reach, each in one scan. The output grows by
+    // whole blocks before each scan (its capacity is reused once warmed up).
+    if (count <= kReadWhole || farthestDistance2(c.bounds.data(), params.point) < params.cutoff2 * 0.9999f) {
+        out.resize(n + blocks * kScanLanes);
+        out.resize(n + kernels_->scan(params, c.centres.data(), c.features.data(), count, out.data() + n, nearOne));
+        return nearOne;
+    }
+    const std::size_t blockFloats = std::size_t(numContinuous_) * kScanLanes;
+    std::size_t written = n;
+    // Blocks within reach, up to 64 groups of 8 at a time; each run of consecutive ones is one scan.
+    constexpr std::size_t kChunk = 64 * kScanLanes;
+    std::uint8_t masks[kChunk / kScanLanes] = {};
+    for (std::size_t chunk = 0; chunk < blocks; chunk += kChunk) {
+        const std::size_t end = std::min(blocks, chunk + kChunk);
+        kernels_->boxesWithin(params, c.blockBounds.data() + chunk / kScanLanes * boundsGroupFloats(), end - chunk,
+                              reach, masks);
+        // Runs of set bits, 64 blocks at a time (a run across two words is two scans).
+        for (std::size_t w = chunk; w < end; w += 64) {
+            std::uint64_t bits = 0;
+            std::memcpy(&bits, masks + (w - chunk) / kScanLanes, sizeof bits);
+            if (end - w < 64) bits &= (std::uint64_t(1) << (end - w)) - 1;
+            while (bits != 0) {
+                const auto start = static_cast<std::size_t>(__builtin_ctzll(bits));
+                const std::uint64_t rest = ~(bits >> start);
+                const std::size_t length = rest == 0 ? 64 - start : static_cast<std::size_t>(__builtin_ctzll(rest));
+                bits &= length + start >= 64 ? 0 : ~std::uint64_t(0) << (start + length);
+                const std::size_t b = w + start;
+                const std::size_t first = b * kScanLanes, last = std::min(count, (b + length) * kScanLanes);
+                out.resize(written + length * kScanLanes);
+                written += kernels_->scan(params, c.centres.data() + b * blockFloats, c.features.data() + first,
+                                          last - first, out.data() + written, nearOne);
+            }
+        }
+    }
+    out.resize(written);
     return nearOne;
 }
 
@@ -222,8 +352,8 @@ bool StateRepresentation::find(const std::int32_t* discrete, const float* contin
         const std::uint64_t hash = cellHash(neighbour_.data());
         auto cell = cells.find(hash);
         // Two neighbour cells whose hashes collide share one list: visit it once.
-        if (cell != cells.end() && std::find(visited_.begin(), visited_.end(), hash) == visited_.end()) {
-            visited_.push_back(hash);
+        if (cell != cells.end() && (exactCellKeys_ || std::find(visited_.begin(), visited_.end(), hash) == visited_.end())) {
+            if (!exactCellKeys_) visited_.push_back(hash);
             nearOne |= scanCell(cell->second, params, out);
         }
         std::uint32_t d = 0;

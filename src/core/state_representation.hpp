@@ -6,6 +6,7 @@
 // uniform grid of cells 4 sigma wide, so activating an observation touches only the cells around
 // it, never all RBFs ever made.
 #pragma once
+#include <algorithm>
 #include <cstdint>
 #include <unordered_map>
 #include <vector>
@@ -31,7 +32,8 @@ public:
     std::uint32_t add(const std::int32_t* discrete, const float* continuous);
     // Room for lookups once there are `features` RBFs: find() then allocates nothing, given an
     // output vector with foundCapacity(features) room (the scan writes whole lanes, then trims).
-    void reserve(std::uint32_t features) { reserveRoom(visited_, features); }
+    // A lookup visits at most 3^n cells, each once, and never more cells than RBFs.
+    void reserve(std::uint32_t features) { reserveRoom(visited_, std::min<std::uint64_t>(features, maxNeighbours_)); }
     static std::size_t foundCapacity(std::uint32_t features) { return std::size_t(features) + kScanLanes; }
     // The same without allocating; returns whether some RBF lies within one width.
     bool find(const std::int32_t* discrete, const float* continuous, std::vector<ActiveFeature>& out) const;
@@ -49,17 +51,23 @@ public:
 
     // Restores a saved feature (centre has numContinuous values, already validated).
     std::uint32_t addFeature(std::uint64_t key, const float* centre);
+    // Once a full lattice is complete (made, or restored from a save): puts each cell's RBFs in
+    // Morton order of their lattice indices and drops spare capacity. No RBF may be added after.
+    void finishLattice();
 
 private:
     // A cell keeps copies of its RBFs' centres next to their indices, in blocks of kScanLanes RBFs
     // stored dimension by dimension ([block][dimension][lane]): the distance loop then runs
     // across kScanLanes RBFs at once in SIMD registers.
-    // A cell also keeps the bounding box of its centres: a cell whose box lies beyond the cutoff
-    // is skipped unread (in 4-D most of the 3^4 neighbour cells' RBFs are out of reach).
+    // A cell also keeps the bounding box of its centres, and one per block: a cell or a block
+    // whose box lies beyond the cutoff is skipped unread (in 4-D most of the 3^4 neighbour cells'
+    // RBFs are out of reach). A full lattice is stored in Morton order within each cell, so that
+    // a block is a small box (2x2x2x1 lattice points in 4-D) and the blocks read are mostly kept.
     struct Cell {
         std::vector<std::uint32_t> features;
-        std::vector<float> centres;  // blocks of numContinuous_ * kScanLanes floats
-        std::vector<float> bounds;   // per dimension: lowest, highest centre
+        std::vector<float> centres;      // blocks of numContinuous_ * kScanLanes floats
+        std::vector<float> bounds;       // per dimension: lowest, highest centre
+        std::vector<float> blockBounds;  // the same per block, in groups of kScanLanes blocks (Kernels::boxesWithin)
     };
     struct Array {
         std::unordered_map<std::uint64_t, Cell> cells;
@@ -67,8 +75,21 @@ private:
 
     // Appends the RBFs of one cell within the cutoff; returns whether one lies within a width.
     bool scanCell(const Cell& c, const ScanParams& params, std::vector<ActiveFeature>& out) const;
-    // Squared distance from a point to a cell's bounding box (the shorter way on circular sensors).
-    float boxDistance2(const Cell& c, const float* point) const;
+    // Squared distance from a point to a bounding box (per dimension: lowest, highest), the
+    // shorter way on circular sensors; and the same to the box's farthest corner.
+    float boxDistance2(const float* bounds, const float* point) const;
+    float farthestDistance2(const float* bounds, const float* point) const;
+    // A cell of up to 16 blocks is always read whole, and keeps no block boxes: testing them
+    // would cost about what it saves (measured on the cart-pole shape, ~60 RBFs per cell).
+    static constexpr std::size_t kReadWhole = 16 * kScanLanes;
+    static std::size_t groupsFor(std::size_t rbfs) { return (rbfs + kScanLanes * kScanLanes - 1) / (kScanLanes * kScanLanes); }
+    std::size_t boundsGroupFloats() const { return std::size_t(numContinuous_) * 2 * kScanLanes; }
+    // Widens a box (lowest of dimension d at lo[d * step], highest at hi[d * step]) to a centre
+    // (dimension d at centre[d * centreStep]).
+    void updateBounds(float* lo, float* hi, std::size_t step, const float* centre, std::size_t centreStep,
+                      bool first) const;
+    void updateBlockBounds(Cell& c, std::size_t rbf) const;  // to the cell's RBF number rbf
+    void rebuildBlockBounds(Cell& c) const;
     std::uint64_t discreteKey(const std::int32_t* discrete) const;
     void cellCoords(const float* point, std::int32_t* coords) const;
     std::uint64_t cellHash(const std::int32_t* coords) const;
@@ -81,6 +102,8 @@ private:
     float sigma_;
     std::int32_t cellsPerDim_;
     float cellSize_;
+    std::uint64_t maxNeighbours_;  // 3^numContinuous, saturated
+    bool exactCellKeys_ = false;   // a cell's key is its coordinates (else a hash that may collide)
     std::uint64_t keyCount_;
     float activationSum_;
     const Kernels* kernels_;  // chosen for this CPU (kernels.hpp)

@@ -10,10 +10,11 @@ TdLearner::TdLearner(std::uint32_t numActions, float traceThreshold)
     step_.reserve(stride_);
 }
 
-void TdLearner::reserve(std::uint32_t features) {
+void TdLearner::reserve(std::uint32_t features, std::size_t active) {
     reserveRoom(traces_, std::size_t(features) * stride_);
-    reserveRoom(live_, std::size_t(features) + 1);
-    reserveRoom(strong_, features);
+    // At most `active` more traces become live (and one spare slot, reserveLive()).
+    reserveRoom(live_, std::min<std::size_t>(liveCount_ + active, features) + 1);
+    reserveRoom(strong_, active);
 }
 
 float TdLearner::value(const WeightTable& w, const std::vector<ActiveFeature>& phi) const {

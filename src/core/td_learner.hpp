@@ -53,8 +53,9 @@ public:
     // e = max(e, phi) for the critic; e_a = max(e_a, phi) for the chosen action's neuron.
     void mark(const std::vector<ActiveFeature>& phi, std::uint32_t action, std::uint32_t featureCount);
     void clear();
-    // Room for `features` features: mark() and trainAndDecay() then allocate nothing.
-    void reserve(std::uint32_t features);
+    // Room for `features` features and a mark() of up to `active` features: mark() and
+    // trainAndDecay() then allocate nothing. Scratch follows what is marked, not the feature count.
+    void reserve(std::uint32_t features, std::size_t active);
 
     std::uint32_t liveCount() const { return liveCount_; }
     std::uint32_t traceStride() const { return stride_; }

@@ -4,6 +4,7 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <cstdint>
 #include <vector>
@@ -98,6 +99,55 @@ TEST(Kernels, ScanFindsWhatADoublePrecisionScanFinds) {
                 for (std::size_t i = 0; i < n; ++i) {
                     EXPECT_EQ(out[i].index, expected[i].index);
                     EXPECT_NEAR(out[i].activation, expected[i].activation, 1e-6f * expected[i].activation + 1e-9f);
+                }
+            }
+        }
+    }
+}
+
+// Boxes in groups of 8, [group][dim][lowest lanes, highest lanes]: a box is within reach when its
+// squared distance to the point (the shorter way on circular sensors) is at most reach2.
+TEST(Kernels, BoxesWithinMatchesADoublePrecisionBoxDistance) {
+    Rng rng(5);
+    for (const Kernels* k : kernelSets()) {
+        SCOPED_TRACE(k->name);
+        for (std::uint32_t dims : {1u, 2u, 4u}) {
+            for (std::size_t count : {1u, 8u, 13u, 70u}) {
+                const ScanCase c = randomCase(rng, dims, count);
+                ScanParams p;
+                p.point = c.point.data();
+                p.circular = c.circular.data();
+                p.dims = dims;
+                const std::size_t groups = (count + kScanLanes - 1) / kScanLanes;
+                std::vector<float> boxes(groups * dims * 2 * kScanLanes, 0.0f);
+                std::vector<double> lo(count * dims), hi(count * dims);
+                for (std::size_t b = 0; b < count; ++b) {
+                    for (std::uint32_t d = 0; d < dims; ++d) {
+                        const float x = uniform(rng, -1.0f, 1.0f), w = uniform(rng, 0.0f, 0.5f);
+                        float* at = boxes.data() + (b / kScanLanes) * dims * 2 * kScanLanes + d * 2 * kScanLanes + b % kScanLanes;
+                        at[0] = x;
+                        at[kScanLanes] = x + w;
+                        lo[b * dims + d] = x;
+                        hi[b * dims + d] = double(x) + double(w);
+                    }
+                }
+                const float reach2 = 0.3f;
+                std::vector<std::uint8_t> masks(groups, 0xff);
+                k->boxesWithin(p, boxes.data(), count, reach2, masks.data());
+                for (std::size_t b = 0; b < groups * kScanLanes; ++b) {
+                    const bool within = ((masks[b / 8] >> (b % 8)) & 1u) != 0;
+                    if (b >= count) {
+                        EXPECT_FALSE(within) << "box " << b << " does not exist";
+                        continue;
+                    }
+                    double d2 = 0.0;
+                    for (std::uint32_t d = 0; d < dims; ++d) {
+                        auto gap = [&](double x) { return std::max(0.0, std::max(lo[b * dims + d] - x, x - hi[b * dims + d])); };
+                        double g = gap(c.point[d]);
+                        if (c.circular[d]) g = std::min(g, std::min(gap(c.point[d] - 2.0), gap(c.point[d] + 2.0)));
+                        d2 += g * g;
+                    }
+                    if (std::fabs(d2 - reach2) > 1e-5) EXPECT_EQ(within, d2 <= reach2) << "box " << b << ", " << dims << " dims";
                 }
             }
         }

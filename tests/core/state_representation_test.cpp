@@ -140,7 +140,34 @@ TEST(StateRepresentation, FullAllocationBuildsTheLattice) {
     EXPECT_EQ(rep.activate(&k, x, true, phi), 0u);  // full lattices never grow
 }
 
-// The spatial index must find exactly what a scan of every RBF finds.
+// The spatial index must find exactly what a scan of every RBF finds: `queries` random points
+// of `dims` sensors, of which those flagged in `circular` wrap.
+static void expectIndexMatchesBruteForce(const StateRepresentation& rep, std::uint32_t dims, const std::vector<bool>& circular,
+                                         float sigma, verve::core::Rng& rng, int queries) {
+    std::vector<std::uint64_t> keys;
+    std::vector<float> centres;
+    rep.features(keys, centres);
+    std::vector<ActiveFeature> phi;
+    std::vector<float> p(dims);
+    for (int q = 0; q < queries; ++q) {
+        for (float& x : p) x = rng.uniform() * 2 - 1;
+        rep.find(nullptr, p.data(), phi);
+        std::size_t expected = 0;
+        for (std::uint32_t f = 0; f < rep.featureCount(); ++f) {
+            float d2 = 0;
+            for (std::uint32_t k = 0; k < dims; ++k) {
+                float diff = p[k] - centres[std::size_t(f) * dims + k];
+                if (circular[k]) { if (diff > 1) diff -= 2; else if (diff < -1) diff += 2; }
+                d2 += diff * diff;
+            }
+            if (d2 >= 16 * sigma * sigma) continue;
+            ++expected;
+            EXPECT_NEAR(activationOf(phi, f), std::exp(-d2 / (2 * sigma * sigma)), 1e-5f);
+        }
+        EXPECT_EQ(phi.size(), expected) << "dims " << dims << " sigma " << sigma;
+    }
+}
+
 TEST(StateRepresentation, SpatialIndexMatchesBruteForce) {
     for (bool circular : {false, true}) {
         for (std::uint32_t resolution : {3u, 8u, 14u, 25u}) {
@@ -150,30 +177,28 @@ TEST(StateRepresentation, SpatialIndexMatchesBruteForce) {
             StateRepresentation rep(d);
             verve::core::Rng rng(resolution);
             std::vector<ActiveFeature> phi;
-            auto point = [&rng](float* p) { for (int i = 0; i < 3; ++i) p[i] = rng.uniform() * 2 - 1; };
             float p[3];
-            for (int i = 0; i < 3000; ++i) { point(p); rep.activate(nullptr, p, true, phi); }
-            std::vector<std::uint64_t> keys;
-            std::vector<float> centres;
-            rep.features(keys, centres);
-            const float sigma = 2.0f / static_cast<float>(resolution);
-            for (int q = 0; q < 300; ++q) {
-                point(p);
-                rep.find(nullptr, p, phi);
-                std::size_t expected = 0;
-                for (std::uint32_t f = 0; f < rep.featureCount(); ++f) {
-                    float d2 = 0;
-                    for (int k = 0; k < 3; ++k) {
-                        float diff = p[k] - centres[std::size_t(f) * 3 + k];
-                        if ((k != 1) && circular) { if (diff > 1) diff -= 2; else if (diff < -1) diff += 2; }
-                        d2 += diff * diff;
-                    }
-                    if (d2 >= 16 * sigma * sigma) continue;
-                    ++expected;
-                    EXPECT_NEAR(activationOf(phi, f), std::exp(-d2 / (2 * sigma * sigma)), 1e-5f);
-                }
-                EXPECT_EQ(phi.size(), expected) << "resolution " << resolution << " circular " << circular;
+            for (int i = 0; i < 3000; ++i) {
+                for (float& x : p) x = rng.uniform() * 2 - 1;
+                rep.activate(nullptr, p, true, phi);
             }
+            expectIndexMatchesBruteForce(rep, 3, {circular, false, circular}, 2.0f / static_cast<float>(resolution), rng, 300);
+        }
+    }
+}
+
+// Full 4-D lattices: cells stored in Morton order, read block by block through their boxes.
+TEST(StateRepresentation, SpatialIndexMatchesBruteForceOnFullLattices) {
+    for (bool circular : {false, true}) {
+        for (std::uint32_t resolution : {6u, 9u, 13u}) {
+            AgentDescriptor d;
+            for (int k = 0; k < 4; ++k) d.addContinuousSensor(circular && k % 2 == 0);
+            d.resolution = resolution;
+            d.allocation = verve::RbfAllocation::Full;
+            StateRepresentation rep(d);
+            verve::core::Rng rng(resolution);
+            expectIndexMatchesBruteForce(rep, 4, {circular, false, circular, false}, 2.0f / static_cast<float>(resolution),
+                                         rng, 100);
         }
     }
 }
