@@ -21,6 +21,16 @@ AgentDescriptor gridAgent() {
     return d;
 }
 
+// One continuous sensor at resolution 10, one action, planning on.
+AgentDescriptor lineAgent() {
+    AgentDescriptor d;
+    d.addContinuousSensor();
+    d.numActions = 1;
+    d.planning = true;
+    d.resolution = 10;
+    return d;
+}
+
 struct Fixture {
     explicit Fixture(const AgentDescriptor& d) : desc(d), rep(d), model(d), weights(layoutFor(d)) {}
     static WeightLayout layoutFor(const AgentDescriptor& d) {
@@ -118,12 +128,7 @@ TEST(PredictiveModel, NoiseKeepsUncertaintyButNotProgress) {
 }
 
 TEST(PredictiveModel, ContinuousPredictionsConvergeWithTheDeltaRule) {
-    AgentDescriptor d;
-    d.addContinuousSensor();
-    d.numActions = 1;
-    d.planning = true;
-    d.resolution = 10;
-    Fixture f(d);
+    Fixture f(lineAgent());
     // x -> x + 0.1 on a few sample points: the linear network over RBFs fits it.
     const float xs[] = {-0.6f, -0.2f, 0.2f, 0.6f};
     std::vector<std::vector<ActiveFeature>> phis;
@@ -147,12 +152,7 @@ TEST(PredictiveModel, ContinuousPredictionsConvergeWithTheDeltaRule) {
 // certain there; at x = 0.2, half-way onto an RBF made but never trained, the uncertainty rises by
 // that RBF's share of the activation.
 TEST(PredictiveModel, StatesOnUntrainedRbfsAreNotCertain) {
-    AgentDescriptor d;
-    d.addContinuousSensor();
-    d.numActions = 1;
-    d.planning = true;
-    d.resolution = 10;
-    Fixture f(d);
+    Fixture f(lineAgent());
     const auto known = f.features({}, {0.0f});
     const float stay = 0.0f;
     for (int i = 0; i < 50; ++i) f.model.train(f.weights, known, 0, nullptr, &stay, 0.0f, f.model.rate(0.1f));
