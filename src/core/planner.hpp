@@ -6,7 +6,7 @@
 // so one plan costs at most maxSteps model queries.
 //
 // With continuous sensors and no curiosity, a plan teaches only if it reaches the end of the trial
-// (a dry run first, then the same trajectory learned): imagined steps that merely walk the known
+// (a dry run first, then the same trajectory learned, so such a plan costs up to twice the queries): imagined steps that merely walk the known
 // region back up the per-step reward drag the overlapping RBFs of the unvisited states next to it
 // down too, and the optimism that drives plain RL toward new states is lost (docs/planning.md).
 // With discrete features an unvisited state shares nothing with the visited ones, so there every
