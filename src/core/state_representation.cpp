@@ -101,7 +101,7 @@ std::uint32_t StateRepresentation::addFeature(std::uint64_t key, const float* ce
     if (lane == 0) cell.centres.resize(cell.centres.size() + std::size_t(numContinuous_) * kScanLanes, 0.0f);
     float* block = cell.centres.data() + cell.centres.size() - std::size_t(numContinuous_) * kScanLanes;
     for (std::uint32_t d = 0; d < numContinuous_; ++d) block[d * kScanLanes + lane] = centre[d];
-    updateBounds(cell.bounds.data(), cell.bounds.data() + 1, 2, centre, 1, cell.features.empty());
+    updateBounds(cell.bounds.data(), 1, 2, centre, 1, cell.features.empty());
     cell.features.push_back(index);
     const std::size_t count = cell.features.size();
     if (count > kReadWhole) {  // within the capacity reserved above
@@ -115,12 +115,16 @@ std::uint32_t StateRepresentation::addFeature(std::uint64_t key, const float* ce
     return index;
 }
 
-void StateRepresentation::updateBounds(float* lo, float* hi, std::size_t step, const float* centre,
+void StateRepresentation::updateBounds(float* lo, std::size_t hiOffset, std::size_t step, const float* centre,
                                        std::size_t centreStep, bool first) const {
+    // Offsets, not a second pointer: with no continuous sensors the bounds are empty (a null
+    // data()), and nothing may be added to a null pointer even when nothing is then read.
     for (std::uint32_t d = 0; d < numContinuous_; ++d) {
         const float x = centre[d * centreStep];
-        lo[d * step] = first ? x : std::min(lo[d * step], x);
-        hi[d * step] = first ? x : std::max(hi[d * step], x);
+        float& low = lo[d * step];
+        float& high = lo[d * step + hiOffset];
+        low = first ? x : std::min(low, x);
+        high = first ? x : std::max(high, x);
     }
 }
 
@@ -128,7 +132,7 @@ void StateRepresentation::updateBlockBounds(Cell& c, std::size_t rbf) const {
     const std::size_t block = rbf / kScanLanes;
     float* lo = c.blockBounds.data() + (block / kScanLanes) * boundsGroupFloats() + block % kScanLanes;
     const float* centre = c.centres.data() + block * numContinuous_ * kScanLanes + rbf % kScanLanes;
-    updateBounds(lo, lo + kScanLanes, 2 * kScanLanes, centre, kScanLanes, rbf % kScanLanes == 0);
+    updateBounds(lo, kScanLanes, 2 * kScanLanes, centre, kScanLanes, rbf % kScanLanes == 0);
 }
 
 void StateRepresentation::rebuildBlockBounds(Cell& c) const {

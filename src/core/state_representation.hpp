@@ -84,9 +84,9 @@ private:
     static constexpr std::size_t kReadWhole = 16 * kScanLanes;
     static std::size_t groupsFor(std::size_t rbfs) { return (rbfs + kScanLanes * kScanLanes - 1) / (kScanLanes * kScanLanes); }
     std::size_t boundsGroupFloats() const { return std::size_t(numContinuous_) * 2 * kScanLanes; }
-    // Widens a box (lowest of dimension d at lo[d * step], highest at hi[d * step]) to a centre
-    // (dimension d at centre[d * centreStep]).
-    void updateBounds(float* lo, float* hi, std::size_t step, const float* centre, std::size_t centreStep,
+    // Widens a box (lowest of dimension d at lo[d * step], highest at lo[d * step + hiOffset]) to
+    // a centre (dimension d at centre[d * centreStep]).
+    void updateBounds(float* lo, std::size_t hiOffset, std::size_t step, const float* centre, std::size_t centreStep,
                       bool first) const;
     void updateBlockBounds(Cell& c, std::size_t rbf) const;  // to the cell's RBF number rbf
     void rebuildBlockBounds(Cell& c) const;
