@@ -211,6 +211,31 @@ VG_METHOD(get_rbf_count) {
     return vg_variant_int(n);
 }
 
+VG_METHOD(get_action_probabilities) {
+    vg_call c;
+    verve_agent* a;
+    verve_agent_desc d;
+    godot_pool_real_array values;
+    godot_pool_real_array_write_access* write;
+    godot_variant out;
+    int ok;
+    VG_UNUSED;
+    verve_agent_desc_default(&d);
+    if (!vg_begin(&c, user_data, "get_action_probabilities", argc, argv, 0, 0) || !vg_agent_handle(&c, &a) ||
+        !vg_check(&c, verve_agent_get_desc(a, &d)))
+        return vg_variant_nil();
+    vg_core->godot_pool_real_array_new(&values);
+    vg_core->godot_pool_real_array_resize(&values, (godot_int)d.num_actions);
+    write = vg_core->godot_pool_real_array_write(&values);
+    ok = vg_check(&c, verve_agent_get_action_probabilities(a, vg_core->godot_pool_real_array_write_access_ptr(write),
+                                                           d.num_actions));
+    vg_core->godot_pool_real_array_write_access_destroy(write);
+    if (ok) vg_core->godot_variant_new_pool_real_array(&out, &values);
+    else out = vg_variant_nil();
+    vg_core->godot_pool_real_array_destroy(&values);
+    return out;
+}
+
 VG_METHOD(get_stats) {
     vg_call c;
     verve_agent* a;
@@ -351,6 +376,27 @@ void vg_set_learning(godot_object* object, void* method_data, void* user_data, g
     if (vg_begin(&c, user_data, "learning", 1, &value, 1, 1) && vg_agent_handle(&c, &a) &&
         vg_arg_bool(&c, 0, "learning", &enabled))
         vg_check(&c, verve_agent_set_learning(a, enabled));
+}
+
+void vg_set_greedy(godot_object* object, void* method_data, void* user_data, godot_variant* value) {
+    vg_call c;
+    verve_agent* a;
+    int greedy = 0;
+    VG_UNUSED;
+    if (vg_begin(&c, user_data, "greedy", 1, &value, 1, 1) && vg_agent_handle(&c, &a) &&
+        vg_arg_bool(&c, 0, "greedy", &greedy))
+        vg_check(&c, verve_agent_set_action_selection(a, greedy ? VERVE_ACTION_GREEDY : VERVE_ACTION_SAMPLE));
+}
+
+godot_variant vg_get_greedy(godot_object* object, void* method_data, void* user_data) {
+    vg_call c;
+    verve_agent* a;
+    uint32_t mode = 0;
+    VG_UNUSED;
+    if (!vg_begin(&c, user_data, "greedy", 0, NULL, 0, 0) || !vg_agent_handle(&c, &a) ||
+        !vg_check(&c, verve_agent_get_action_selection(a, &mode)))
+        return vg_variant_nil();
+    return vg_variant_bool(mode == VERVE_ACTION_GREEDY);
 }
 
 godot_variant vg_get_learning(godot_object* object, void* method_data, void* user_data) {

@@ -20,6 +20,7 @@ VG_DECLARE(get_default_options)
 VG_DECLARE(get_value)
 VG_DECLARE(get_td_error)
 VG_DECLARE(get_rbf_count)
+VG_DECLARE(get_action_probabilities)
 VG_DECLARE(get_stats)
 VG_DECLARE(sample_values)
 VG_DECLARE(has_agent)
@@ -30,5 +31,9 @@ VG_DECLARE(get_last_error)
 /* The `learning` property. */
 void vg_set_learning(godot_object* object, void* method_data, void* user_data, godot_variant* value);
 godot_variant vg_get_learning(godot_object* object, void* method_data, void* user_data);
+/* The `greedy` property: false samples each action with its probability (learning explores),
+ * true always plays the most probable one (a shipped, frozen NPC). Per agent, not saved. */
+void vg_set_greedy(godot_object* object, void* method_data, void* user_data, godot_variant* value);
+godot_variant vg_get_greedy(godot_object* object, void* method_data, void* user_data);
 
 #endif

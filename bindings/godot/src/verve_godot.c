@@ -52,6 +52,9 @@ static const vg_method_info vg_methods[] = {
     {"get_value", vg_get_value, "V(s) of the latest observation. -> float", 0, {{0}}},
     {"get_td_error", vg_get_td_error, "TD error of the latest step. -> float", 0, {{0}}},
     {"get_rbf_count", vg_get_rbf_count, "Radial basis functions created so far. -> int", 0, {{0}}},
+    {"get_action_probabilities", vg_get_action_probabilities,
+     "The policy's probability of each action at the latest update (what sampling drew from). -> PoolRealArray",
+     0, {{0}}},
     {"get_stats", vg_get_stats, "steps, rbf_count, live_traces, value, td_error and planning figures. -> Dictionary",
      0, {{0}}},
     {"sample_values", vg_sample_values,
@@ -116,6 +119,8 @@ VG_EXPORT void godot_nativescript_init(void* handle) {
     godot_property_attributes learning;
     godot_property_set_func set_learning = {vg_set_learning, NULL, NULL};
     godot_property_get_func get_learning = {vg_get_learning, NULL, NULL};
+    godot_property_set_func set_greedy = {vg_set_greedy, NULL, NULL};
+    godot_property_get_func get_greedy = {vg_get_greedy, NULL, NULL};
     godot_method_attributes attributes = {GODOT_METHOD_RPC_MODE_DISABLED};
     size_t i;
     if (!vg_ns) return;
@@ -132,6 +137,9 @@ VG_EXPORT void godot_nativescript_init(void* handle) {
     learning.usage = GODOT_PROPERTY_USAGE_NOEDITOR; /* a run-time switch: not in the inspector */
     learning.default_value = vg_variant_bool(1);
     vg_ns->godot_nativescript_register_property(handle, VG_CLASS, "learning", &learning, set_learning, get_learning);
+    vg_core->godot_variant_destroy(&learning.default_value);
+    learning.default_value = vg_variant_bool(0); /* `greedy`: the same kind of run-time switch */
+    vg_ns->godot_nativescript_register_property(handle, VG_CLASS, "greedy", &learning, set_greedy, get_greedy);
     vg_core->godot_string_destroy(&learning.hint_string);
     vg_core->godot_variant_destroy(&learning.default_value);
 }

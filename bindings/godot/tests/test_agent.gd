@@ -131,6 +131,27 @@ func test_episode_learning_readouts():
 	check("learning must be a bool" in a.get_last_error() and a.learning == false, "learning takes bools only")
 	a.learning = true
 	drive(a, 5)
+	var p = a.get_action_probabilities()
+	check(typeof(p) == TYPE_REAL_ARRAY and p.size() == a.get_options()["actions"], "one probability per action")
+	var total = 0.0
+	for x in p:
+		total += x
+	check(abs(total - 1.0) < 1e-4, "the probabilities sum to 1")
+	check(a.greedy == false, "sampling by default")
+	a.greedy = true
+	check(a.greedy == true, "greedy play can be switched on")
+	a.learning = false  # the same weights for both updates below
+	a.update(0.0, [1], [0.2, -0.3], 0.1)
+	p = a.get_action_probabilities()
+	var best = 0
+	for i in range(p.size()):
+		if p[i] > p[best]:
+			best = i
+	check(a.update(0.0, [1], [0.2, -0.3], 0.1) == best, "greedy plays the most probable action")
+	a.learning = true
+	a.greedy = "yes"
+	check("greedy must be a bool" in a.get_last_error() and a.greedy == true, "greedy takes bools only")
+	a.greedy = false
 	check(typeof(a.get_value()) == TYPE_REAL and typeof(a.get_td_error()) == TYPE_REAL, "value and TD error")
 	check(a.get_rbf_count() > 0 and a.get_rbf_count() == a.get_stats()["rbf_count"], "rbf count")
 	for key in ["steps", "rbf_count", "live_traces", "value", "td_error", "model_error", "predicted_uncertainty",
