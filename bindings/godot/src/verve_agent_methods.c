@@ -111,22 +111,49 @@ VG_METHOD(save_bytes) {
     return out;
 }
 
-VG_METHOD(update) {
+/* Most actions an agent may have (the library's limit): a mask is read onto the stack. */
+#define VG_MAX_ACTIONS 4096
+
+/* update and update_masked: argv is (reward, discrete, continuous, dt[, mask]). */
+static godot_variant vg_step(void* user_data, const char* method, int argc, godot_variant** argv, int masked) {
     vg_call c;
     verve_agent* a;
     float reward = 0.0f, dt = 0.0f;
     int32_t discrete[VERVE_MAX_DISCRETE_SENSORS];
     float continuous[VERVE_MAX_CONTINUOUS_SENSORS];
-    uint32_t n_discrete = 0, n_continuous = 0, action = 0;
-    VG_UNUSED;
-    if (!vg_begin(&c, user_data, "update", argc, argv, 4, 4) || !vg_agent_handle(&c, &a) ||
+    int32_t flags[VG_MAX_ACTIONS];
+    uint8_t mask[VG_MAX_ACTIONS];
+    uint32_t n_discrete = 0, n_continuous = 0, n_mask = 0, action = 0, i;
+    if (!vg_begin(&c, user_data, method, argc, argv, 4 + masked, 4 + masked) || !vg_agent_handle(&c, &a) ||
         !vg_arg_float(&c, 0, "reward", &reward) ||
         !vg_read_ints(&c, argv[1], "discrete", discrete, VERVE_MAX_DISCRETE_SENSORS, &n_discrete) ||
         !vg_read_floats(&c, argv[2], "continuous", continuous, VERVE_MAX_CONTINUOUS_SENSORS, &n_continuous) ||
         !vg_arg_float(&c, 3, "dt", &dt) ||
-        !vg_check(&c, verve_agent_update(a, reward, discrete, n_discrete, continuous, n_continuous, dt, &action)))
+        (masked && !vg_read_ints(&c, argv[4], "mask", flags, VG_MAX_ACTIONS, &n_mask)))
+        return vg_variant_int(-1);
+    for (i = 0; i < n_mask; ++i) {
+        if (flags[i] != 0 && flags[i] != 1) {
+            vg_fail(&c, "mask[%u] must be 0 or 1 (got %d)", i, (int)flags[i]);
+            return vg_variant_int(-1);
+        }
+        mask[i] = (uint8_t)flags[i];
+    }
+    if (!vg_check(&c, masked ? verve_agent_update_masked(a, reward, discrete, n_discrete, continuous, n_continuous, dt,
+                                                         mask, n_mask, &action)
+                             : verve_agent_update(a, reward, discrete, n_discrete, continuous, n_continuous, dt,
+                                                  &action)))
         return vg_variant_int(-1);
     return vg_variant_int(action);
+}
+
+VG_METHOD(update) {
+    VG_UNUSED;
+    return vg_step(user_data, "update", argc, argv, 0);
+}
+
+VG_METHOD(update_masked) {
+    VG_UNUSED;
+    return vg_step(user_data, "update_masked", argc, argv, 1);
 }
 
 VG_METHOD(end_episode) {

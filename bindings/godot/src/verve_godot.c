@@ -13,12 +13,14 @@ typedef struct vg_arg_info {
     godot_variant_type type;
 } vg_arg_info;
 
+#define VG_MAX_ARGS 5 /* the most any method takes (update_masked) */
+
 typedef struct vg_method_info {
     const char* name;
     vg_method_fn fn;
     const char* doc;
     int argc;
-    vg_arg_info args[4];
+    vg_arg_info args[VG_MAX_ARGS];
 } vg_method_info;
 
 #define VG_NIL GODOT_VARIANT_TYPE_NIL /* any type */
@@ -39,6 +41,15 @@ static const vg_method_info vg_methods[] = {
       {"discrete", GODOT_VARIANT_TYPE_POOL_INT_ARRAY},
       {"continuous", GODOT_VARIANT_TYPE_POOL_REAL_ARRAY},
       {"dt", GODOT_VARIANT_TYPE_REAL}}},
+    {"update_masked", vg_update_masked,
+     "update() choosing only among the actions the mask allows this step (one 0/1 per action, at least one 1); "
+     "a masked action is never chosen and gets no credit. -> the action (-1 on error)",
+     5,
+     {{"reward", GODOT_VARIANT_TYPE_REAL},
+      {"discrete", GODOT_VARIANT_TYPE_POOL_INT_ARRAY},
+      {"continuous", GODOT_VARIANT_TYPE_POOL_REAL_ARRAY},
+      {"dt", GODOT_VARIANT_TYPE_REAL},
+      {"mask", GODOT_VARIANT_TYPE_POOL_INT_ARRAY}}},
     {"end_episode", vg_end_episode, "Ends a trial with its final reward. -> bool", 1,
      {{"final_reward", GODOT_VARIANT_TYPE_REAL}}},
     {"truncate_episode", vg_truncate_episode,
@@ -84,7 +95,7 @@ static void vg_destruct(godot_object* object, void* method_data, void* user_data
 }
 
 static void vg_document(void* handle, const vg_method_info* m) {
-    godot_method_arg args[4];
+    godot_method_arg args[VG_MAX_ARGS];
     godot_string doc;
     int i;
     if (!vg_ns11) return;

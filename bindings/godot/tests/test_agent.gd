@@ -149,6 +149,14 @@ func test_episode_learning_readouts():
 			best = i
 	check(a.update(0.0, [1], [0.2, -0.3], 0.1) == best, "greedy plays the most probable action")
 	a.learning = true
+	for i in range(30):
+		var masked = a.update_masked(0.0, [i % 3], [sin(i * 0.3), 0.1], 0.1, [1, 0, 1])
+		check(masked == 0 or masked == 2, "a masked action is never chosen")
+	check(a.get_action_probabilities()[1] == 0.0, "a masked action has probability 0")
+	check_error(a, a.update_masked(0.0, [1], [0.2, -0.3], 0.1, [0, 0, 0]), -1, "allows no action", "a mask that allows nothing")
+	check_error(a, a.update_masked(0.0, [1], [0.2, -0.3], 0.1, [1, 2, 0]), -1, "mask[1] must be 0 or 1 (got 2)",
+		"a mask flag that is not 0 or 1")
+	check_error(a, a.update_masked(0.0, [1], [0.2, -0.3], 0.1, [1, 1]), -1, "has 2 flags, the agent has 3 actions", "a mask of the wrong size")
 	a.greedy = "yes"
 	check("greedy must be a bool" in a.get_last_error() and a.greedy == true, "greedy takes bools only")
 	a.greedy = false
