@@ -24,6 +24,11 @@ struct AgentSnapshot {
     // Learned parameters: featureCount rows of `stride` floats (critic, actor, model outputs).
     std::uint32_t stride = 0;
     std::vector<float> weights;
+    // The real rewards learned from, widened to include 0 (-1 <= rewardLow <= 0 <= rewardHigh <= 1):
+    // they bound the values TD errors bootstrap from. Saves that predate them read [-1, 1], the
+    // bound those versions used.
+    float rewardLow = -1.0f;
+    float rewardHigh = 1.0f;
 
     // Live eligibility traces: traceFeatures[j] with traceStride floats in traces (value, policy[A]).
     std::uint32_t traceStride = 0;

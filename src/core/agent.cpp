@@ -55,9 +55,11 @@ StepConstants Agent::Impl::constantsFor(float dt) const {
     k.rates.value = rateFromTimeConstant(dt, desc.tauValue) / rep.activationSum();
     k.rates.policy = desc.policyMultiplier * k.rates.value;
     k.rates.policyBound = desc.policyWeightBound;
-    // Rewards are clamped to [-1, 1]; curiosity adds up to its factor on imagined steps.
-    const float rewardBound = 1.0f + (desc.planning && desc.curiosity != CuriosityMode::None ? desc.curiosityFactor : 0.0f);
-    k.valueBound = core::valueBound(rewardBound, k.gamma);
+    // Curiosity adds to the rewards of imagined steps: novelty up to its factor, progress (which
+    // may be negative) up to its factor in size (core/curiosity.hpp).
+    const float bonus = desc.planning && desc.curiosity != CuriosityMode::None ? desc.curiosityFactor : 0.0f;
+    const float bonusLow = desc.curiosity == CuriosityMode::Progress ? -bonus : 0.0f;
+    k.values = core::valueBounds(brain->rewards, bonusLow, bonus, k.gamma);
     return k;
 }
 
@@ -85,7 +87,8 @@ void Agent::Impl::plan(const StepConstants& k) {
     p.gamma = k.gamma;
     p.traceDecay = k.traceDecay;
     p.rates = k.rates;
-    p.valueBound = k.valueBound;
+    p.values = k.values;
+    p.rewards = brain->rewards;
     p.onlyPlansThatEnd = !desc.continuousSensors.empty() && desc.curiosity == CuriosityMode::None;
     const core::PlanResult result = planner.run(p, current, weights, rep, model, rng);
     stats.planningSteps = result.steps;
@@ -127,6 +130,12 @@ float Agent::Impl::clampedReward(float reward) {
                        "agent, counted in stats.clamped_rewards)", static_cast<double>(reward));
         }
     }
+    return r;
+}
+
+float Agent::Impl::learnedReward(float reward) {
+    const float r = clampedReward(reward);
+    if (learning && hasPrevious) brain->rewards.see(r);
     return r;
 }
 
@@ -177,7 +186,7 @@ std::uint32_t Agent::update(float reward, ObservationView obs, float dt, ActionM
     }
     // Nothing below allocates.
     if (overBudget) s.noteBudgetReached();
-    const float r = s.clampedReward(reward);
+    const float r = s.learnedReward(reward);
     s.lastDt = dt;
 
     const bool plans = s.learning && s.desc.planning;
@@ -185,12 +194,12 @@ std::uint32_t Agent::update(float reward, ObservationView obs, float dt, ActionM
     if (s.learning && s.hasPrevious) {
         if (plans) s.learnModel(r, obs.discrete, dt);
         if (s.learnsFromRealSteps()) {
-            // V(s) is the value the previous update left in stats.value: no weight changes
+            // V(s) is the value the previous update left in latestValue: no weight changes
             // between two updates (endEpisode, resets and restores clear or recompute it),
             // unless other bodies of a shared brain trained it since.
-            const float before = s.sharesBrain ? s.td.value(s.weights, s.previous) : s.stats.value;
-            const float next = core::bounded(s.td.value(s.weights, s.current), k.valueBound);
-            const float delta = r + k.gamma * next - core::bounded(before, k.valueBound);
+            const float before = s.sharesBrain ? s.td.value(s.weights, s.previous) : s.latestValue;
+            const float next = core::bounded(s.td.value(s.weights, s.current), k.values);
+            const float delta = r + k.gamma * next - core::bounded(before, k.values);
             s.td.trainAndDecay(s.weights, delta, k.rates, k.traceDecay);
             s.stats.tdError = delta;
         }
@@ -198,8 +207,9 @@ std::uint32_t Agent::update(float reward, ObservationView obs, float dt, ActionM
     // Plan from the state just reached, before acting, so the action already uses what it taught.
     if (plans) s.plan(k);
 
-    const std::uint32_t action = s.td.chooseAction(s.weights, s.current, s.rng, s.activations, s.stats.value,
+    const std::uint32_t action = s.td.chooseAction(s.weights, s.current, s.rng, s.activations, s.latestValue,
                                                    mask.allowed, s.selection == ActionSelection::Greedy);
+    s.stats.value = core::bounded(s.latestValue, k.values);
     s.recordProbabilities(mask.allowed);
     if (s.learning && s.learnsFromRealSteps()) s.td.mark(s.current, action, s.rep.featureCount());
 
@@ -218,13 +228,13 @@ std::uint32_t Agent::update(float reward, ObservationView obs, float dt, ActionM
 void Agent::endEpisode(float finalReward) {
     Impl& s = *impl_;
     core::checkFinite(finalReward, "final reward");
-    const float r = s.clampedReward(finalReward);
+    const float r = s.learnedReward(finalReward);
     if (s.learning && s.hasPrevious && s.desc.planning) s.learnModelTerminal(r);
     if (s.learning && s.hasPrevious && s.learnsFromRealSteps()) {
         // Terminal: nothing lies beyond, so no value is bootstrapped (delta = r - V(s)).
         // The transition lasted as long as the step that chose its action: the last dt.
         const StepConstants k = s.constantsFor(s.lastDt);
-        const float delta = r - core::bounded(s.td.value(s.weights, s.previous), k.valueBound);
+        const float delta = r - core::bounded(s.td.value(s.weights, s.previous), k.values);
         s.td.trainAndDecay(s.weights, delta, k.rates, 0.0f);
         s.stats.tdError = delta;
     }
@@ -234,12 +244,12 @@ void Agent::endEpisode(float finalReward) {
 void Agent::truncateEpisode(float reward) {
     Impl& s = *impl_;
     core::checkFinite(reward, "reward");
-    const float r = s.clampedReward(reward);
+    const float r = s.learnedReward(reward);
     if (s.learning && s.hasPrevious && s.learnsFromRealSteps()) {
         // Not terminal: the trial would have gone on from where the last action led, which the
         // agent never saw; the last state's value stands in for it: delta = r + gamma V(s) - V(s).
         const StepConstants k = s.constantsFor(s.lastDt);
-        const float v = core::bounded(s.td.value(s.weights, s.previous), k.valueBound);
+        const float v = core::bounded(s.td.value(s.weights, s.previous), k.values);
         const float delta = r + k.gamma * v - v;
         s.td.trainAndDecay(s.weights, delta, k.rates, 0.0f);
         s.stats.tdError = delta;

@@ -22,7 +22,7 @@ struct StepConstants {
     float gamma = 0.0f;        // e^(-dt / tau_discount)
     float traceDecay = 0.0f;   // gamma * lambda, lambda = e^(-dt / tau_eligibility)
     core::TdRates rates;       // (1 - e^(-dt / tau_value)) / sum, times k for the policy
-    float valueBound = 0.0f;   // largest possible |V|: TD errors bootstrap only from values within it
+    core::ValueBounds values;  // what a policy can earn: TD errors bootstrap only from values within it
 };
 
 struct Agent::Impl {
@@ -44,6 +44,8 @@ struct Agent::Impl {
     void reserveFor(std::uint32_t features, std::size_t active);
     // The observed reward within [-1, 1]; a clamp is counted and reported (once per agent).
     float clampedReward(float reward);
+    // The clamped reward of the step that ends now; a learning agent adds it to its brain's range.
+    float learnedReward(float reward);
     // An update that needed an RBF the budget did not allow: counted and reported (once).
     void noteBudgetReached();
     // probabilities = activations / their sum (uniform over the allowed actions if all underflowed).
@@ -74,6 +76,9 @@ struct Agent::Impl {
     std::vector<float> previousContinuous;
     float lastDt = 0.1f;  // dt of the latest update: the duration of a terminal transition
 
+    // V(s) of the latest state as the weights give it; stats.value reports it within the value
+    // bounds, as every TD error uses it.
+    float latestValue = 0.0f;
     AgentStats stats;
     bool reportedClamp = false;
     bool reportedBudget = false;

@@ -58,6 +58,10 @@ std::unique_ptr<Agent::Impl> restoreAgent(const AgentSnapshot& snap) {
     if (snap.descriptor.allocation == RbfAllocation::Full) s.rep.finishLattice();  // as it was made
     s.weights.resize(static_cast<std::uint32_t>(count));
     s.weights.data() = snap.weights;
+    if (!(snap.rewardLow >= -1.0f && snap.rewardLow <= 0.0f && snap.rewardHigh >= 0.0f && snap.rewardHigh <= 1.0f)) {
+        corrupt("the reward range must satisfy -1 <= low <= 0 <= high <= 1");
+    }
+    s.brain->rewards = core::RewardRange{snap.rewardLow, snap.rewardHigh};
 
     // Traces: optional (an empty list restores none).
     if (!snap.traceFeatures.empty() || !snap.traces.empty()) {
@@ -110,7 +114,8 @@ std::unique_ptr<Agent::Impl> restoreAgent(const AgentSnapshot& snap) {
     s.stats.modelError = snap.modelError;
     s.stats.rbfCount = s.rep.featureCount();
     s.stats.liveTraces = s.td.liveCount();
-    s.stats.value = s.hasPrevious ? s.td.value(s.weights, s.previous) : 0.0f;
+    s.latestValue = s.hasPrevious ? s.td.value(s.weights, s.previous) : 0.0f;
+    s.stats.value = core::bounded(s.latestValue, s.constantsFor(s.lastDt).values);
     return impl;
 }
 
@@ -119,6 +124,8 @@ void snapshotBrain(const BrainState& brain, AgentSnapshot& snap) {
     brain.rep.features(snap.featureKeys, snap.centres);
     snap.stride = brain.weights.stride();
     snap.weights = brain.weights.data();
+    snap.rewardLow = brain.rewards.low;
+    snap.rewardHigh = brain.rewards.high;
     snap.traceStride = 1 + brain.desc.numActions;
 }
 

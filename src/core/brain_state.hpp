@@ -4,6 +4,7 @@
 #include <cstdint>
 
 #include "core/state_representation.hpp"
+#include "core/td_learner.hpp"
 #include "core/weight_table.hpp"
 #include "verve/agent_descriptor.hpp"
 
@@ -16,6 +17,8 @@ struct BrainState {
     core::StateRepresentation rep;
     core::WeightTable weights;
     std::uint64_t bodiesMade = 0;  // numbers each new body's random stream
+    // The real rewards every body has learned from: they bound the values TD errors bootstrap from.
+    core::RewardRange rewards;
 
     // Scratch of a batch update (batch.cpp): which group of the current call this brain is in.
     std::uint64_t batchToken = 0;

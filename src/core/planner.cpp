@@ -1,5 +1,6 @@
 #include "core/planner.hpp"
 
+#include <algorithm>
 #include <utility>
 
 #include "core/curiosity.hpp"
@@ -49,7 +50,7 @@ PlanResult Planner::run(const PlanSettings& s, const std::vector<ActiveFeature>&
         uncertainty = s.accumulate ? uncertainty + prediction_.uncertainty : prediction_.uncertainty;
         const float bonus = curiosityReward(s.curiosity, s.curiosityFactor, prediction_);
         td_.mark(phi_, action, rep.featureCount());
-        const float v = bounded(value, s.valueBound);
+        const float v = bounded(value, s.values);
 
         if (uncertainty > s.uncertaintyThreshold) {
             // Too uncertain to trust the predicted successor. A novelty-curious agent still learns
@@ -61,7 +62,7 @@ PlanResult Planner::run(const PlanSettings& s, const std::vector<ActiveFeature>&
             }
             break;
         }
-        const float reward = prediction_.reward + bonus;
+        const float reward = std::clamp(prediction_.reward, s.rewards.low, s.rewards.high) + bonus;
         result.curiosity += bonus;
         ++result.steps;
         if (prediction_.terminal > 0.5f) {  // the trial ends: nothing to bootstrap from
@@ -69,7 +70,7 @@ PlanResult Planner::run(const PlanSettings& s, const std::vector<ActiveFeature>&
             break;
         }
         rep.find(prediction_.discrete.data(), prediction_.continuous.data(), next_);
-        td_.trainAndDecay(w, reward + s.gamma * bounded(td_.value(w, next_), s.valueBound) - v, s.rates, s.traceDecay);
+        td_.trainAndDecay(w, reward + s.gamma * bounded(td_.value(w, next_), s.values) - v, s.rates, s.traceDecay);
         std::swap(phi_, next_);
     }
     return result;

@@ -37,7 +37,8 @@ struct PlanSettings {
     float gamma = 0.0f;
     float traceDecay = 0.0f;
     TdRates rates;
-    float valueBound = 0.0f;  // TD errors bootstrap only from values within it (td_learner.hpp)
+    ValueBounds values;       // TD errors bootstrap only from values within them (td_learner.hpp)
+    RewardRange rewards;      // predicted rewards are clamped to the real ones seen
     bool onlyPlansThatEnd = false;  // learn only from plans that reach the end of the trial
 };
 

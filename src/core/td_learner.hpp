@@ -8,6 +8,7 @@
 // policy traces (both take the max with the same phi and decay alike), so it alone decides liveness.
 #pragma once
 #include <algorithm>
+#include <cmath>
 #include <cstdint>
 #include <limits>
 #include <vector>
@@ -25,14 +26,36 @@ struct TdRates {
     float policyBound = 0.0f;  // > 0: every actor weight stays within +-policyBound (0: unbounded)
 };
 
-// No state is worth more, in size, than the largest reward discounted forever: rewardBound / (1 - gamma).
-// Unnormalised RBFs can extrapolate beyond it (their activations add up to more between trained
-// points than at a border), and such an impossible value must not bootstrap a TD error: next to a
-// wall it punished moving away until an agent stayed stuck there for good (docs/algorithm.md).
-inline float valueBound(float rewardBound, float gamma) {
-    return gamma < 1.0f ? rewardBound / (1.0f - gamma) : std::numeric_limits<float>::infinity();
+// The real rewards an agent has learned from, widened to include 0 (a trial may end before any
+// reward). They bound what any policy can earn: every discounted sum of rewards within [low, high]
+// lies within [low, high] / (1 - gamma).
+struct RewardRange {
+    float low = 0.0f;
+    float high = 0.0f;
+    void see(float reward) {
+        low = std::min(low, reward);
+        high = std::max(high, reward);
+    }
+};
+
+struct ValueBounds {
+    float low = 0.0f;
+    float high = 0.0f;
+};
+
+// Unnormalised RBFs extrapolate (their activations add up to more between trained points than at a
+// border), and imagined steps add their own errors: a value beyond what any policy can earn must
+// not bootstrap a TD error. Next to a wall an impossible value punished moving away until an agent
+// stayed stuck there for good; with planning, imagined steps pushed a value to +13.7 in a task whose
+// every real reward was -1 (docs/algorithm.md). Curiosity adds [bonusLow, bonusHigh] to a reward.
+inline float discountedForever(float reward, float gamma) {
+    if (reward == 0.0f) return 0.0f;
+    return gamma < 1.0f ? reward / (1.0f - gamma) : std::copysign(std::numeric_limits<float>::infinity(), reward);
 }
-inline float bounded(float value, float bound) { return std::clamp(value, -bound, bound); }
+inline ValueBounds valueBounds(RewardRange rewards, float bonusLow, float bonusHigh, float gamma) {
+    return ValueBounds{discountedForever(rewards.low + bonusLow, gamma), discountedForever(rewards.high + bonusHigh, gamma)};
+}
+inline float bounded(float value, ValueBounds b) { return std::clamp(value, b.low, b.high); }
 
 class TdLearner {
 public:

@@ -46,12 +46,13 @@ void Agent::sampleValueFunction(const std::vector<ValueAxis>& axes, const Observ
         else obs.continuous[axis.index] = -1.0f + 2.0f * static_cast<float>(i) / static_cast<float>(axis.samples - 1);
     };
     std::vector<core::ActiveFeature> phi;
+    const core::ValueBounds bounds = s.constantsFor(s.lastDt).values;  // as stats.value and TD errors see V
     for (std::size_t i1 = 0; i1 < n1; ++i1) {
         if (axes.size() == 2) set(axes[1], i1);
         for (std::size_t i0 = 0; i0 < n0; ++i0) {
             set(axes[0], i0);
             s.rep.find(obs.discrete.data(), obs.continuous.data(), phi);
-            out[i1 * n0 + i0] = s.td.value(s.weights, phi);
+            out[i1 * n0 + i0] = core::bounded(s.td.value(s.weights, phi), bounds);
         }
     }
 }

@@ -7,6 +7,8 @@
 //   list(name, vector<T>&)   u64 count, then the items
 //   items(name, vector<T>&, itemBytes, f)  u64 count, then f(io, item) for each item
 #pragma once
+#include <cstdint>
+
 #include "verve/agent_snapshot.hpp"
 
 namespace verve::io {
@@ -37,8 +39,10 @@ void transferDescriptor(Io& io, Descriptor& d) {
 }
 
 // `shortTerm`: whether the traces and the previous step follow (SaveOptions::includeTraces).
+// `version`: the binary format version of the save (fields added later are read only from saves
+// that have them).
 template <typename Io, typename Snapshot, typename Flag>
-void transferPayload(Io& io, Snapshot& s, Flag& shortTerm) {
+void transferPayload(Io& io, Snapshot& s, Flag& shortTerm, std::uint32_t version) {
     transferDescriptor(io, s.descriptor);
     io.flag("learning", s.learning);
     io.value("steps", s.steps);
@@ -49,6 +53,10 @@ void transferPayload(Io& io, Snapshot& s, Flag& shortTerm) {
     io.list("centres", s.centres);
     io.value("stride", s.stride);
     io.list("weights", s.weights);
+    if (version >= 2) {
+        io.value("reward_low", s.rewardLow);
+        io.value("reward_high", s.rewardHigh);
+    }
     io.flag("short_term_memory", shortTerm);
     if (!shortTerm) return;
     io.value("trace_stride", s.traceStride);

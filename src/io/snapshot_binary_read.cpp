@@ -125,7 +125,7 @@ AgentSnapshot snapshotFromBinary(const char* data, std::size_t size) {
     Reader reader(payload, header.remaining());
     AgentSnapshot s;
     bool shortTerm = false;
-    transferPayload(reader, s, shortTerm);
+    transferPayload(reader, s, shortTerm, version);
     if (reader.remaining() != 0) {
         fail("binary save: " + std::to_string(reader.remaining()) + " unexpected bytes after the data");
     }

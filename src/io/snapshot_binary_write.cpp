@@ -90,10 +90,10 @@ std::string snapshotToBinary(const AgentSnapshot& snapshot, bool includeTraces) 
     }
     const bool shortTerm = includeTraces;
     Sizer sizer;
-    transferPayload(sizer, snapshot, shortTerm);
+    transferPayload(sizer, snapshot, shortTerm, kBinaryFormatVersion);
     std::string out(kBinaryHeaderBytes + sizer.bytes, '\0');
     Writer payload{out.data() + kBinaryHeaderBytes};
-    transferPayload(payload, snapshot, shortTerm);
+    transferPayload(payload, snapshot, shortTerm, kBinaryFormatVersion);
 
     Writer header{out.data()};
     header.raw(kBinaryMagic, sizeof kBinaryMagic);

@@ -123,6 +123,9 @@ void checkSnapshot(const AgentSnapshot& s) {
     }
     if (!(std::isfinite(s.lastDt) && s.lastDt > 0.0f)) fail("lastDt is not a finite number > 0");
     if (!(std::isfinite(s.modelError) && s.modelError >= 0.0f)) fail("modelError is not a finite number >= 0");
+    if (!(s.rewardLow >= -1.0f && s.rewardLow <= 0.0f && s.rewardHigh >= 0.0f && s.rewardHigh <= 1.0f)) {
+        fail("the reward range is not -1 <= low <= 0 <= high <= 1");
+    }
 }
 
 }  // namespace verve::io

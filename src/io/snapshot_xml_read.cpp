@@ -126,6 +126,8 @@ void readState(pugi::xml_node root, AgentSnapshot& s) {
     s.steps = readUint64(n, "steps");
     s.modelError = readFloat(n, "model_error");
     s.lastDt = readFloat(n, "last_dt");
+    if (n.attribute("reward_low")) s.rewardLow = readFloat(n, "reward_low");  // absent: the snapshot's [-1, 1]
+    if (n.attribute("reward_high")) s.rewardHigh = readFloat(n, "reward_high");
     std::vector<std::uint64_t> rng;
     std::string bad;
     if (!parseList(attributeText(n, "rng"), rng, bad) || rng.size() != s.rng.size()) {

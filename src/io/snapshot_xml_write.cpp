@@ -95,6 +95,8 @@ void writeState(pugi::xml_node root, const AgentSnapshot& s) {
     setNumber(n, "steps", s.steps);
     setNumber(n, "model_error", s.modelError);
     setNumber(n, "last_dt", s.lastDt);
+    setNumber(n, "reward_low", s.rewardLow);
+    setNumber(n, "reward_high", s.rewardHigh);
     std::string rng;
     for (std::uint64_t word : s.rng) {
         if (!rng.empty()) rng += ' ';

@@ -154,6 +154,36 @@ TEST(BinarySave, BrainSavesLoadAsBrainsAndAsAgentsExactly) {
     }
 }
 
+// Version 1 (before the reward range) is version 2 without the range's 8 bytes after the weights.
+// Such a save loads with the widest range, [-1, 1], the value bound version 1 used.
+TEST(BinarySave, Version1SavesLoadWithTheWidestRewardRange) {
+    Agent agent = trainedAgent(iotest::plannerDescriptor(), 410);
+    AgentSnapshot snap = agent.snapshot();
+    ASSERT_LT(snap.rewardLow, 0.0f);  // a range narrower than [-1, 1], so the test can tell
+    ASSERT_LT(snap.rewardHigh, 1.0f);
+    std::string bytes = binarySave(agent);
+    char tail[12];
+    std::memcpy(tail, &snap.weights.back(), 4);
+    std::memcpy(tail + 4, &snap.rewardLow, 4);
+    std::memcpy(tail + 8, &snap.rewardHigh, 4);
+    const std::size_t at = bytes.find(std::string(tail, 12), io::kBinaryHeaderBytes);
+    ASSERT_NE(at, std::string::npos);
+    bytes.erase(at + 4, 8);
+    const std::uint32_t version = 1;
+    const std::uint64_t payload = bytes.size() - io::kBinaryHeaderBytes;
+    const std::uint64_t sum = io::payloadChecksum(bytes.data() + io::kBinaryHeaderBytes, payload);
+    std::memcpy(&bytes[8], &version, 4);
+    std::memcpy(&bytes[16], &payload, 8);
+    std::memcpy(&bytes[24], &sum, 8);
+
+    const AgentSnapshot loaded = loadAgentFromMemory(bytes.data(), bytes.size()).snapshot();
+    EXPECT_EQ(loaded.rewardLow, -1.0f);
+    EXPECT_EQ(loaded.rewardHigh, 1.0f);
+    snap.rewardLow = -1.0f;
+    snap.rewardHigh = 1.0f;
+    expectSameSnapshot(snap, loaded);
+}
+
 TEST(BinarySave, BrainFilesLoadAsBrainsAndAsAgents) {
     const auto path = std::filesystem::temp_directory_path() / "verve_binary_brain_test.bin";
     const Brain brain = trainedBrain(iotest::mixedDescriptor(13));
@@ -209,13 +239,14 @@ TEST_P(CorruptBinarySave, EverySingleBitFlipIsRefused) {
 
 TEST_P(CorruptBinarySave, FutureVersionIsAVersionError) {
     std::string s = bytes_;
-    s[8] = 2;
+    const std::uint32_t newer = io::kBinaryFormatVersion + 1;
+    std::memcpy(&s[8], &newer, 4);
     try {
         load(GetParam(), s);
         ADD_FAILURE() << "a newer version loaded";
     } catch (const Error& e) {
         EXPECT_EQ(e.code(), ErrorCode::Version) << e.what();
-        EXPECT_NE(std::string(e.what()).find("version 2"), std::string::npos) << e.what();
+        EXPECT_NE(std::string(e.what()).find("version " + std::to_string(newer)), std::string::npos) << e.what();
     }
 }
 

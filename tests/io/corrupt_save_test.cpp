@@ -134,6 +134,13 @@ TEST_F(CorruptSave, BadAttributeValuesAreNamed) {
                   ErrorCode::Format, "rng");
     expectRefused(edited([](pugi::xml_node r) { r.child("state").attribute("rng").set_value("1 2 3"); }),
                   ErrorCode::Format, "rng");
+    for (const char* range : {"reward_low=0.5", "reward_low=-1.5", "reward_high=-0.25", "reward_high=2", "reward_low=nan"}) {
+        const std::string edit = range;
+        const std::string name = edit.substr(0, edit.find('='));
+        const std::string value = edit.substr(edit.find('=') + 1);
+        expectRefused(edited([&](pugi::xml_node r) { r.child("state").attribute(name.c_str()).set_value(value.c_str()); }),
+                      ErrorCode::Format, "reward range");
+    }
 }
 
 TEST_F(CorruptSave, NumbersMustBeFinite) {

@@ -3,6 +3,9 @@
 
 #include <cstdio>
 #include <filesystem>
+#include <sstream>
+
+#include <pugixml.hpp>
 
 #include "io_test_support.hpp"
 #include "verve/io.hpp"
@@ -85,6 +88,28 @@ TEST(RoundTrip, PolicyWeightBoundIsKeptAndOnlyWrittenWhenSet) {
     EXPECT_EQ(loaded.descriptor().policyWeightBound, 3.5f);
     expectSameSnapshot(agent.snapshot(), loaded.snapshot());
     expectSameFuture(agent, loaded);
+}
+
+// The range of real rewards bounds the values TD errors bootstrap from: it is saved, and a save
+// from before it loads with the widest range, [-1, 1], the bound those versions used.
+TEST(RoundTrip, RewardRangeIsKeptAndOldSavesGetTheWidest) {
+    Agent agent = trainedAgent(iotest::plannerDescriptor(), 120);
+    const std::string xml = saveAgentToString(agent);
+    const AgentSnapshot loaded = loadAgentFromMemory(xml.data(), xml.size()).snapshot();
+    EXPECT_EQ(loaded.rewardLow, agent.snapshot().rewardLow);
+    EXPECT_EQ(loaded.rewardHigh, agent.snapshot().rewardHigh);
+    EXPECT_LT(loaded.rewardLow, 0.0f);
+
+    pugi::xml_document doc;
+    ASSERT_TRUE(doc.load_string(xml.c_str()));
+    pugi::xml_node state = doc.document_element().child("state");
+    ASSERT_TRUE(state.remove_attribute("reward_low"));
+    ASSERT_TRUE(state.remove_attribute("reward_high"));
+    std::ostringstream old;
+    doc.save(old);
+    const AgentSnapshot widest = loadAgentFromMemory(old.str().data(), old.str().size()).snapshot();
+    EXPECT_EQ(widest.rewardLow, -1.0f);
+    EXPECT_EQ(widest.rewardHigh, 1.0f);
 }
 
 TEST(RoundTrip, LearningSwitchIsKept) {

@@ -1,5 +1,6 @@
 // Curiosity on the shared curiosity grid (thesis fig. 44; original: RL 8.8, planning 51.5,
-// planning + curiosity 82.4 reward per trial over trials 61-80) and on a noisy-TV room.
+// planning + curiosity 82.4 reward per trial over trials 61-80 of its first 30 runs, 9.0 / 43.1 /
+// 79.0 over 10 seeds of 30 runs) and on a noisy-TV room.
 #include <gtest/gtest.h>
 
 #include "noisy_tv.hpp"
@@ -11,9 +12,15 @@ using namespace verve::tasks;
 
 namespace {
 
+// Mean over seeds 1-10 of 30 runs each: the curious agent's seeds range from 73 to 84, so one
+// seed's 30 runs cannot tell a change from luck.
 double rewardOverTrials61To80(const char* task) {
-    const LearningCurve c = runExperiment(findTask(task)->make, 30, 81, 1, {}, 2);
-    return windowMean(c.reward, 61, 81);
+    constexpr int kSeeds = 10;
+    double sum = 0.0;
+    for (int seed = 1; seed <= kSeeds; ++seed) {
+        sum += windowMean(runExperiment(findTask(task)->make, 30, 81, seed, {}, 2).reward, 61, 81);
+    }
+    return sum / kSeeds;
 }
 
 // Fraction of steps spent in front of the screen over trials 20-39 of each run.
@@ -44,7 +51,7 @@ TEST(CuriosityLearning, CuriousAgentsFindTheLargeReward) {
     const double planning = rewardOverTrials61To80("curiosity-grid-planning");
     RecordProperty("curious", std::to_string(curious));
     RecordProperty("planning", std::to_string(planning));
-    EXPECT_GE(curious, 82.0);   // the original's planning + curiosity: 82.4
+    EXPECT_GE(curious, 79.0);   // the original's planning + curiosity over the same 10 seeds: 79.0
     EXPECT_LE(planning, 20.0);  // stays with the small rewards (0.1 a step at best: <= 10 a trial)
 }
 
