@@ -12,6 +12,7 @@
 #include <string>
 #include <vector>
 
+#include "crowd_path.hpp"
 #include "verve_c.h"
 
 namespace {
@@ -27,14 +28,7 @@ struct Shape {
 const Shape kTiny{"tiny", 2, 2, 0};
 const Shape kCartPole{"cart_pole", 4, 3, 676};
 
-// A smooth path through the sensor space, each sensor a sum of two sines: frame t of it.
-void frame(const Shape& s, uint64_t t, float* out) {
-    for (uint32_t k = 0; k < s.sensors; ++k) {
-        const float x = 0.011f * static_cast<float>(t);
-        out[k] = 0.6f * std::sin(x * (1.0f + 0.37f * static_cast<float>(k)) + static_cast<float>(k)) +
-                 0.3f * std::sin(x * (3.1f + 0.53f * static_cast<float>(k)));
-    }
-}
+void frame(const Shape& s, uint64_t t, float* out) { verve::bench::crowdFrame(s.sensors, t, out); }
 
 // One agent of the shape, grown along the path to its RBF count (the tiny one for 4,000 steps),
 // saved: every agent of a crowd is a copy of it.

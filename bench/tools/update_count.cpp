@@ -2,13 +2,20 @@
 // cannot blur (docs/performance.md):
 //   valgrind --tool=callgrind --toggle-collect='*measuredUpdates*' build/bench/verve_update_count cart-pole
 // Shapes: cart-pole (20,000 warm-up steps, 3,000 counted), dense-4d-R and dense-2d-R (the full
-// lattice at resolution R; 500 warm-up, 300 counted).
+// lattice at resolution R; 500 warm-up, 300 counted), and crowds that do not fit in a 4 MB cache
+// (crowd-cart-pole: 300 agents, crowd-tiny: 3,000; the shapes and path of verve_crowd_bench; 10
+// frames of warm-up, 20 counted), for the cache simulation's misses per update:
+//   valgrind --tool=callgrind --cache-sim=yes --LL=4194304,16,64 --toggle-collect='*measuredFrames*' \
+//     build/bench/verve_update_count crowd-cart-pole
 #include <cstdio>
 #include <cstdlib>
 #include <cstring>
+#include <memory>
 #include <string>
+#include <vector>
 
 #include "bench_shapes.hpp"
+#include "crowd_path.hpp"
 
 namespace {
 
@@ -24,10 +31,57 @@ void warmAndMeasure(Run& run, int warm, int count) {
     measuredUpdates(run, count);
 }
 
+// A crowd: copies of one agent grown along the path, agent i reading it 97 * i frames along.
+struct Crowd {
+    Crowd(std::uint32_t sensors, std::uint32_t actions, std::uint32_t rbfs, std::uint32_t n) : sensors_(sensors) {
+        verve::AgentDescriptor d;
+        for (std::uint32_t k = 0; k < sensors; ++k) d.addContinuousSensor();
+        d.resolution = 8;
+        d.numActions = actions;
+        verve::Agent warm(d);
+        verve::Observation obs(d);
+        std::uint32_t action = 0;
+        for (std::uint64_t t = 0; rbfs > 0 ? warm.rbfCount() < rbfs : t < 4000; ++t) {  // as verve_crowd_bench
+            verve::bench::crowdFrame(sensors, t, obs.continuous.data());
+            action = warm.update(action == 0 ? 0.1f : -0.1f, obs, 1.0f / 60);
+        }
+        const verve::AgentSnapshot snapshot = warm.snapshot();
+        for (std::uint32_t i = 0; i < n; ++i) agents_.push_back(std::make_unique<verve::Agent>(snapshot));
+        actions_.assign(n, 0);
+        obs_ = verve::Observation(d);
+    }
+    void frame() {
+        ++step_;
+        for (std::size_t i = 0; i < agents_.size(); ++i) {
+            verve::bench::crowdFrame(sensors_, step_ + 97 * i, obs_.continuous.data());
+            actions_[i] = agents_[i]->update(actions_[i] == 0 ? 0.1f : -0.1f, obs_, 1.0f / 60);
+        }
+    }
+    std::uint32_t sensors_;
+    std::uint64_t step_ = 0;
+    std::vector<std::unique_ptr<verve::Agent>> agents_;
+    std::vector<std::uint32_t> actions_;
+    verve::Observation obs_;
+};
+
+// Not inlined, so that callgrind collects exactly these frames.
+__attribute__((noinline)) void measuredFrames(Crowd& crowd, int count) {
+    for (int i = 0; i < count; ++i) crowd.frame();
+}
+
 }  // namespace
 
 int main(int argc, char** argv) {
     const std::string shape = argc > 1 ? argv[1] : "";
+    if (shape == "crowd-cart-pole" || shape == "crowd-tiny") {
+        const bool tiny = shape == "crowd-tiny";
+        Crowd crowd(tiny ? 2 : 4, tiny ? 2 : 3, tiny ? 0 : 676, tiny ? 3000 : 300);
+        for (int i = 0; i < 10; ++i) crowd.frame();
+        measuredFrames(crowd, 20);
+        std::printf("%s: %zu agents x 20 frames = %zu updates counted\n", shape.c_str(), crowd.agents_.size(),
+                    crowd.agents_.size() * 20);
+        return 0;
+    }
     if (shape == "cart-pole") {
         verve::Agent agent(verve::bench::cartPoleAgent());
         verve::bench::CartPoleRun run(agent);
@@ -46,6 +100,7 @@ int main(int argc, char** argv) {
         std::printf("%s: 300 updates counted at %zu RBFs\n", shape.c_str(), agent.rbfCount());
         return 0;
     }
-    std::fprintf(stderr, "usage: verve_update_count cart-pole | dense-4d-R | dense-2d-R (R: resolution, at most 40 in 4-D, 400 in 2-D)\n");
+    std::fprintf(stderr, "usage: verve_update_count cart-pole | dense-4d-R | dense-2d-R (R: resolution, at most 40 in 4-D, 400 in "
+                         "2-D) | crowd-cart-pole | crowd-tiny\n");
     return 2;
 }

@@ -19,8 +19,17 @@ std::uint32_t trainDecayRows(const TraceStep& s, float* __restrict weights, floa
     const float* __restrict step = s.step;
     const float decay = s.decay, threshold = s.threshold;
     std::uint32_t kept = 0;
+    // The live rows lie scattered over the feature arrays, and in a crowd they are not in cache:
+    // rows asked for kAhead features early arrive while this one trains (a 10,000-agent
+    // cart-pole crowd: ~13% less time per update, docs/performance.md). live[i + kAhead] is
+    // still unread: compaction only writes at or below i.
+    constexpr std::uint32_t kAhead = 16;
     for (std::uint32_t i = 0; i < count; ++i) {
         const std::uint32_t feature = live[i];
+        if (i + kAhead < count) {
+            __builtin_prefetch(traces + std::size_t(live[i + kAhead]) * stride, 1);
+            __builtin_prefetch(weights + std::size_t(live[i + kAhead]) * weightStride, 1);
+        }
         float* __restrict w = weights + feature * weightStride;
         float* __restrict e = traces + std::size_t(feature) * stride;
         // The value component decides whether the trace stays live; a dropped one is zeroed,

@@ -34,11 +34,12 @@ struct TraceStep {
 
 struct Kernels {
     const char* name;
-    // Writes the `count` RBFs of `centres` (blocks as above; `features` are their indices) that lie
-    // within the cutoff to `out`, in order, and returns how many. `out` needs room for `count`
-    // rounded up to kScanLanes. Sets `nearOne` when one lies within a width.
+    // Writes the `count` RBFs of `centres` (blocks as above; `features` are their indices, or null
+    // when they are firstFeature, firstFeature + 1, ...) that lie within the cutoff to `out`, in
+    // order, and returns how many. `out` needs room for `count` rounded up to kScanLanes. Sets
+    // `nearOne` when one lies within a width.
     std::size_t (*scan)(const ScanParams& p, const float* centres, const std::uint32_t* features,
-                        std::size_t count, ActiveFeature* out, bool& nearOne);
+                        std::uint32_t firstFeature, std::size_t count, ActiveFeature* out, bool& nearOne);
     // For `count` boxes stored in groups of kScanLanes, [group][dimension][lowest lanes, highest
     // lanes], sets bit b % kScanLanes of masks[b / kScanLanes] when box b lies within squared
     // distance `reach2` of the point (the shorter way on circular sensors), and clears the others.

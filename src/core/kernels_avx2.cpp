@@ -48,8 +48,8 @@ constexpr PackTable makePackTable() {
 }
 constexpr PackTable kPack = makePackTable();
 
-std::size_t scan(const ScanParams& p, const float* centres, const std::uint32_t* features, std::size_t count,
-                 ActiveFeature* out, bool& nearOne) {
+std::size_t scan(const ScanParams& p, const float* centres, const std::uint32_t* features, std::uint32_t firstFeature,
+                 std::size_t count, ActiveFeature* out, bool& nearOne) {
     static_assert(kScanLanes == 8, "one block is one AVX register");
     const __m256 cutoff2 = _mm256_set1_ps(p.cutoff2), width2 = _mm256_set1_ps(p.width2);
     const __m256 scale = _mm256_set1_ps(p.negInv2Sigma2);
@@ -73,7 +73,9 @@ std::size_t scan(const ScanParams& p, const float* centres, const std::uint32_t*
         const int valid = remaining >= kScanLanes ? 0xff : (1 << remaining) - 1;
         const __m256i laneNumbers = _mm256_setr_epi32(0, 1, 2, 3, 4, 5, 6, 7);
         const __m256i index =
-            remaining >= kScanLanes
+            features == nullptr
+                ? _mm256_add_epi32(_mm256_set1_epi32(static_cast<int>(firstFeature + first)), laneNumbers)
+            : remaining >= kScanLanes
                 ? _mm256_loadu_si256(reinterpret_cast<const __m256i*>(features + first))
                 : _mm256_maskload_epi32(reinterpret_cast<const int*>(features + first),
                                         _mm256_cmpgt_epi32(_mm256_set1_epi32(static_cast<int>(remaining)), laneNumbers));

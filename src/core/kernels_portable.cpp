@@ -13,8 +13,8 @@ namespace {
 using Lanes = Eigen::Array<float, kScanLanes, 1>;
 using Quad = Eigen::Array4f;
 
-std::size_t scan(const ScanParams& p, const float* centres, const std::uint32_t* features, std::size_t count,
-                 ActiveFeature* out, bool& nearOne) {
+std::size_t scan(const ScanParams& p, const float* centres, const std::uint32_t* features, std::uint32_t firstFeature,
+                 std::size_t count, ActiveFeature* out, bool& nearOne) {
     std::size_t n = 0;
     const float* block = centres;
     for (std::size_t first = 0; first < count; first += kScanLanes) {
@@ -31,7 +31,8 @@ std::size_t scan(const ScanParams& p, const float* centres, const std::uint32_t*
         // (about half are, so a branch would mispredict constantly).
         const std::size_t lanes = std::min<std::size_t>(kScanLanes, count - first);
         for (std::size_t l = 0; l < lanes; ++l) {
-            out[n] = ActiveFeature{features[first + l], activation[l]};
+            const auto i = static_cast<std::uint32_t>(first + l);
+            out[n] = ActiveFeature{features != nullptr ? features[i] : firstFeature + i, activation[l]};
             n += d2[l] < p.cutoff2;
             nearOne |= d2[l] < p.width2;
         }

@@ -102,6 +102,8 @@ std::uint32_t StateRepresentation::addFeature(std::uint64_t key, const float* ce
     float* block = cell.centres.data() + cell.centres.size() - std::size_t(numContinuous_) * kScanLanes;
     for (std::uint32_t d = 0; d < numContinuous_; ++d) block[d * kScanLanes + lane] = centre[d];
     updateBounds(cell.bounds.data(), 1, 2, centre, 1, cell.features.empty());
+    if (cell.features.empty()) cell.firstFeature = index;
+    cell.consecutive = cell.features.empty() || (cell.consecutive && index == cell.features.back() + 1);
     cell.features.push_back(index);
     const std::size_t count = cell.features.size();
     if (count > kReadWhole) {  // within the capacity reserved above
@@ -221,6 +223,9 @@ void StateRepresentation::finishLattice() {
                 }
             }
             rebuildBlockBounds(cell);
+            cell.firstFeature = count > 0 ? cell.features[0] : 0;
+            cell.consecutive = true;
+            for (std::size_t i = 1; i < count; ++i) cell.consecutive = cell.consecutive && cell.features[i] == cell.firstFeature + i;
             // The lattice is complete: no cell grows again, so none keeps spare capacity.
             cell.features.shrink_to_fit();
             cell.centres.shrink_to_fit();
@@ -263,21 +268,24 @@ float StateRepresentation::farthestDistance2(const float* bounds, const float* p
     return sum;
 }
 
-bool StateRepresentation::scanCell(const Cell& c, const ScanParams& params, std::vector<ActiveFeature>& out) const {
+bool StateRepresentation::scanCell(const Cell& c, const ScanParams& params, bool boxes,
+                                   std::vector<ActiveFeature>& out) const {
     // The margin keeps an RBF whose distance rounds differently in the scan (a box distance is
     // never more than any of its centres' distances).
     const float reach = params.cutoff2 * 1.0001f;
     if (boxDistance2(c.bounds.data(), params.point) > reach) return false;
     const std::size_t n = out.size();
     const std::size_t count = c.features.size();
+    const std::uint32_t* features = c.consecutive ? nullptr : c.features.data();
+    const std::uint32_t firstFeature = c.firstFeature;
     bool nearOne = false;
     const std::size_t blocks = (count + kScanLanes - 1) / kScanLanes;
     // A cell of a few blocks (kReadWhole), or one wholly within the cutoff, is read whole;
     // otherwise runs of consecutive blocks within reach, each in one scan. The output grows by
     // whole blocks before each scan (its capacity is reused once warmed up).
-    if (count <= kReadWhole || farthestDistance2(c.bounds.data(), params.point) < params.cutoff2 * 0.9999f) {
+    if (!boxes || count <= kReadWhole || farthestDistance2(c.bounds.data(), params.point) < params.cutoff2 * 0.9999f) {
         out.resize(n + blocks * kScanLanes);
-        out.resize(n + kernels_->scan(params, c.centres.data(), c.features.data(), count, out.data() + n, nearOne));
+        out.resize(n + kernels_->scan(params, c.centres.data(), features, firstFeature, count, out.data() + n, nearOne));
         return nearOne;
     }
     const std::size_t blockFloats = std::size_t(numContinuous_) * kScanLanes;
@@ -289,11 +297,13 @@ bool StateRepresentation::scanCell(const Cell& c, const ScanParams& params, std:
         const std::size_t end = std::min(blocks, chunk + kChunk);
         kernels_->boxesWithin(params, c.blockBounds.data() + chunk / kScanLanes * boundsGroupFloats(), end - chunk,
                               reach, masks);
+        blocksTested_ += static_cast<std::uint32_t>(end - chunk);
         // Runs of set bits, 64 blocks at a time (a run across two words is two scans).
         for (std::size_t w = chunk; w < end; w += 64) {
             std::uint64_t bits = 0;
             std::memcpy(&bits, masks + (w - chunk) / kScanLanes, sizeof bits);
             if (end - w < 64) bits &= (std::uint64_t(1) << (end - w)) - 1;
+            blocksKept_ += static_cast<std::uint32_t>(__builtin_popcountll(bits));
             while (bits != 0) {
                 const auto start = static_cast<std::size_t>(__builtin_ctzll(bits));
                 const std::uint64_t rest = ~(bits >> start);
@@ -302,8 +312,10 @@ bool StateRepresentation::scanCell(const Cell& c, const ScanParams& params, std:
                 const std::size_t b = w + start;
                 const std::size_t first = b * kScanLanes, last = std::min(count, (b + length) * kScanLanes);
                 out.resize(written + length * kScanLanes);
-                written += kernels_->scan(params, c.centres.data() + b * blockFloats, c.features.data() + first,
-                                          last - first, out.data() + written, nearOne);
+                written += kernels_->scan(params, c.centres.data() + b * blockFloats,
+                                          features != nullptr ? features + first : nullptr,
+                                          firstFeature + static_cast<std::uint32_t>(first), last - first,
+                                          out.data() + written, nearOne);
             }
         }
     }
@@ -344,30 +356,44 @@ bool StateRepresentation::find(const std::int32_t* discrete, const float* contin
     params.width2 = sigma_ * sigma_;
     params.negInv2Sigma2 = -1.0f / (2.0f * sigma_ * sigma_);
     bool nearOne = false;
+    const bool boxes = wholeLookupsLeft_ == 0;
+    if (!boxes) --wholeLookupsLeft_;
     if (cells.size() <= neighbours) {
         // A coarse grid (low resolution, many sensors): the array has no more cells than the
         // neighbourhood, so reading them all costs no more and needs no hashing.
-        for (const auto& entry : cells) nearOne |= scanCell(entry.second, params, out);
-        return nearOne;
-    }
-    visited_.clear();
-    while (true) {
-        for (std::uint32_t d = 0; d < numContinuous_; ++d) neighbour_[d] = candidates_[d * 3 + offsets_[d]];
-        const std::uint64_t hash = cellHash(neighbour_.data());
-        auto cell = cells.find(hash);
-        // Two neighbour cells whose hashes collide share one list: visit it once.
-        if (cell != cells.end() && (exactCellKeys_ || std::find(visited_.begin(), visited_.end(), hash) == visited_.end())) {
-            if (!exactCellKeys_) visited_.push_back(hash);
-            nearOne |= scanCell(cell->second, params, out);
+        for (const auto& entry : cells) nearOne |= scanCell(entry.second, params, boxes, out);
+    } else {
+        visited_.clear();
+        while (true) {
+            for (std::uint32_t d = 0; d < numContinuous_; ++d) neighbour_[d] = candidates_[d * 3 + offsets_[d]];
+            const std::uint64_t hash = cellHash(neighbour_.data());
+            auto cell = cells.find(hash);
+            // Two neighbour cells whose hashes collide share one list: visit it once.
+            if (cell != cells.end() && (exactCellKeys_ || std::find(visited_.begin(), visited_.end(), hash) == visited_.end())) {
+                if (!exactCellKeys_) visited_.push_back(hash);
+                nearOne |= scanCell(cell->second, params, boxes, out);
+            }
+            std::uint32_t d = 0;
+            for (; d < numContinuous_; ++d) {  // odometer over the neighbour cells
+                if (++offsets_[d] < candidateCount_[d]) break;
+                offsets_[d] = 0;
+            }
+            if (d == numContinuous_) break;
         }
-        std::uint32_t d = 0;
-        for (; d < numContinuous_; ++d) {  // odometer over the neighbour cells
-            if (++offsets_[d] < candidateCount_[d]) break;
-            offsets_[d] = 0;
-        }
-        if (d == numContinuous_) break;
     }
+    if (boxes) judgeBoxes();
     return nearOne;
+}
+
+void StateRepresentation::judgeBoxes() const {
+    if (blocksTested_ < kJudgeBlocks) return;
+    // Skipped blocks save (dims + 1) * kScanLanes floats each, every box tested costs 2 * dims:
+    // the boxes pay when kept / tested < 1 - dims / (4 (dims + 1)).
+    const std::uint64_t perBlock = 4 * (std::uint64_t(numContinuous_) + 1);
+    if (std::uint64_t(blocksKept_) * perBlock > std::uint64_t(blocksTested_) * (perBlock - numContinuous_)) {
+        wholeLookupsLeft_ = kWholeLookups;
+    }
+    blocksTested_ = blocksKept_ = 0;
 }
 
 }  // namespace verve::core

@@ -202,3 +202,67 @@ TEST(StateRepresentation, SpatialIndexMatchesBruteForceOnFullLattices) {
         }
     }
 }
+
+// A dynamic agent's RBFs lie along the paths it took: on the cart-pole shape (4 sensors,
+// resolution 8, one cell of ~700 RBFs) nearly every block box passes, so lookups stop testing
+// the boxes and read the cell whole for a while. Both ways must find exactly what a scan of
+// every RBF finds.
+TEST(StateRepresentation, CellsReadWholeWhenBlockBoxesSkipLittle) {
+    AgentDescriptor d;
+    for (int k = 0; k < 4; ++k) d.addContinuousSensor();
+    d.resolution = 8;
+    StateRepresentation rep(d);
+    std::vector<ActiveFeature> phi;
+    auto pathPoint = [](int t, float* p) {
+        for (int k = 0; k < 4; ++k) {
+            const float x = 0.011f * static_cast<float>(t);
+            p[k] = 0.6f * std::sin(x * (1.0f + 0.37f * k) + k) + 0.3f * std::sin(x * (3.1f + 0.53f * k));
+        }
+    };
+    float p[4];
+    int t = 0;
+    for (; rep.featureCount() < 600; ++t) {
+        pathPoint(t, p);
+        rep.activate(nullptr, p, true, phi);
+    }
+    std::vector<std::uint64_t> keys;
+    std::vector<float> centres;
+    rep.features(keys, centres);
+    const float sigma = 2.0f / 8.0f;
+    int whole = 0, boxed = 0;
+    for (int q = 0; q < 400; ++q) {
+        pathPoint(7 * q + 3, p);  // on the path, where lookups happen
+        (rep.readsCellsWhole() ? whole : boxed) += 1;
+        rep.find(nullptr, p, phi);
+        std::vector<ActiveFeature> expected;
+        for (std::uint32_t f = 0; f < rep.featureCount(); ++f) {
+            float d2 = 0;
+            for (int k = 0; k < 4; ++k) d2 += (p[k] - centres[f * 4 + k]) * (p[k] - centres[f * 4 + k]);
+            if (d2 < 16 * sigma * sigma) expected.emplace_back(f, std::exp(-d2 / (2 * sigma * sigma)));
+        }
+        ASSERT_EQ(phi.size(), expected.size()) << "query " << q;
+        for (std::size_t i = 0; i < phi.size(); ++i) {  // one cell, in allocation order
+            EXPECT_EQ(phi[i].index, expected[i].index);
+            EXPECT_NEAR(phi[i].activation, expected[i].activation, 1e-5f);
+        }
+    }
+    EXPECT_GT(whole, 300);  // mostly whole: nearly every box passes on this shape
+    EXPECT_GT(boxed, 0);    // and the boxes are measured again now and then
+}
+
+// In a dense lattice most blocks lie beyond the cutoff: the boxes keep being tested.
+TEST(StateRepresentation, DenseLatticesKeepTestingBlockBoxes) {
+    AgentDescriptor d;
+    for (int k = 0; k < 4; ++k) d.addContinuousSensor();
+    d.resolution = 13;
+    d.allocation = verve::RbfAllocation::Full;
+    StateRepresentation rep(d);
+    verve::core::Rng rng(5);
+    std::vector<ActiveFeature> phi;
+    float p[4];
+    for (int q = 0; q < 200; ++q) {
+        for (float& x : p) x = rng.uniform() * 2 - 1;
+        rep.find(nullptr, p, phi);
+        EXPECT_FALSE(rep.readsCellsWhole()) << "query " << q;
+    }
+}
