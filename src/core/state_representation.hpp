@@ -84,7 +84,7 @@ private:
     // Without `boxes`, a cell is read whole, never through its block boxes (same result).
     bool scanCell(const Cell& c, const ScanParams& params, bool boxes, std::vector<ActiveFeature>& out) const;
     // After a lookup that tested block boxes: once enough blocks were tested, and nearly all of
-    // them passed, the next kWholeLookups lookups read their cells whole (see boxesPay_).
+    // them passed, the next kWholeLookups lookups read their cells whole (the counters below).
     void judgeBoxes() const;
     // Squared distance from a point to a bounding box (per dimension: lowest, highest), the
     // shorter way on circular sensors; and the same to the box's farthest corner.
