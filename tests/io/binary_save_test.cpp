@@ -19,15 +19,17 @@ namespace {
 std::atomic<std::size_t> g_largestAllocation{0};
 }  // namespace
 
-void* operator new(std::size_t size) {
+// None of these is inlined: GCC would otherwise match the malloc/free inside them against the
+// `new`/`delete` expressions around them and warn (-Wmismatched-new-delete).
+__attribute__((noinline)) void* operator new(std::size_t size) {
     std::size_t seen = g_largestAllocation.load(std::memory_order_relaxed);
     while (size > seen && !g_largestAllocation.compare_exchange_weak(seen, size, std::memory_order_relaxed)) {
     }
     if (void* p = std::malloc(size == 0 ? 1 : size)) return p;
     throw std::bad_alloc();
 }
-void operator delete(void* p) noexcept { std::free(p); }
-void operator delete(void* p, std::size_t) noexcept { std::free(p); }
+__attribute__((noinline)) void operator delete(void* p) noexcept { std::free(p); }
+__attribute__((noinline)) void operator delete(void* p, std::size_t) noexcept { std::free(p); }
 
 namespace verve {
 namespace {
