@@ -88,8 +88,15 @@ std::vector<TaskInfo> makeRegistry() {
         // A changing world: the rules change once the agent has learned them.
         {"cue-change", "8 cues -> 5 actions (+1/-1); 4 cues change their correct action at trial 1000",
          [](std::uint64_t seed) { return std::make_unique<CueChange>(seed); }, 20, 2000, Metric::Success},
-        {"maze1-moving-goal", "maze #1, discrete position; the goal moves to (0, 9) at trial 50",
-         maze(maze1MovingGoalLayout, D, false), 50, 150, Metric::Steps},
+        // A world that changes: bounded actor weights (3), so the old path's habit can be unlearned.
+        // With the defaults some runs keep walking the old path for dozens of trials (docs/experiments.md).
+        {"maze1-moving-goal", "maze #1, discrete position, actor bound 3; the goal moves to (0, 9) at trial 50",
+         [](std::uint64_t) {
+             auto task = std::make_unique<Maze>(maze1MovingGoalLayout(), Sensors::Discrete);
+             task->settings().policyWeightBound = 3.0f;
+             return task;
+         },
+         50, 150, Metric::Steps},
         {"swapping-hot-plate-1d", "1D hot plate, left end safe until trial 100, then only the right end",
          [](std::uint64_t) { return std::make_unique<HotPlate>(HotPlateConfig{1, false, Sensors::Discrete, 20, 200, 100}); },
          100, 300, Metric::Steps},

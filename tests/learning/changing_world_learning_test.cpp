@@ -54,14 +54,26 @@ TEST(ChangingWorldLearning, CueToActionIsRelearnedAfterHalfTheCuesChange) {
 }
 
 TEST(ChangingWorldLearning, MazeGoalThatMovesIsFoundAgain) {
-    // Maze #1's goal moves from (7, 1) to (0, 9) at trial 50 (optimum 22, then 9).
-    const LearningCurve c = learn("maze1-moving-goal", 20, 100);
-    const Window before = windowOf(c, 40, 50), soon = windowOf(c, 60, 70), late = windowOf(c, 90, 100);
-    print("maze1-moving-goal trials 40-49", before);
-    print("maze1-moving-goal trials 60-69", soon);
-    print("maze1-moving-goal trials 90-99", late);
-    EXPECT_DOUBLE_EQ(windowOf(c, 60, 100).success, 1.0);  // from trial 60 on, every run finds the new goal every time
-    EXPECT_LE(soon.steps, 60.0);
+    // Maze #1's goal moves from (7, 1) to (0, 9) at trial 50 (optimum 22, then 9). The task bounds
+    // the actor weights (3); with the defaults these seeds leave runs on the old path (from trial
+    // 60 on, the worst seed finds the goal in 92.7% of trials; 310 steps on trials 60-69).
+    constexpr int kSeeds = 10;
+    const TaskInfo* info = findTask("maze1-moving-goal");
+    Window soon, late;
+    double worst = 1.0;
+    for (std::uint64_t seed = kSeed; seed < kSeed + kSeeds; ++seed) {
+        const LearningCurve c = runExperiment(info->make, 20, 100, seed);
+        soon.steps += windowOf(c, 60, 70).steps / kSeeds;
+        soon.optimal += windowOf(c, 60, 70).optimal / kSeeds;
+        late.steps += windowOf(c, 90, 100).steps / kSeeds;
+        late.optimal += windowOf(c, 90, 100).optimal / kSeeds;
+        worst = std::min(worst, windowOf(c, 60, 100).success);
+    }
+    soon.success = late.success = worst;
+    print("maze1-moving-goal trials 60-69, 10 seeds", soon);
+    print("maze1-moving-goal trials 90-99, 10 seeds", late);
+    EXPECT_DOUBLE_EQ(worst, 1.0);  // from trial 60 on, every run of every seed finds the new goal every time
+    EXPECT_LE(soon.steps, 60.0);   // measured 38.3
     EXPECT_LE(late.excess(), 12.0);
 }
 
