@@ -21,7 +21,11 @@ struct AgentSnapshot {
     std::vector<std::uint64_t> featureKeys;
     std::vector<float> centres;
 
-    // Learned parameters: featureCount rows of `stride` floats (critic, actor, model outputs).
+    // Learned parameters: featureCount rows of `stride` floats (critic, actor, model outputs),
+    // each within +-kWeightLimit. Learning cannot reach it (with rewards in [-1, 1] and float
+    // steps, a weight stops growing long before 1e16), and below it no update can overflow to
+    // inf: a save with a larger weight is corrupt or hostile.
+    static constexpr float kWeightLimit = 1e20f;
     std::uint32_t stride = 0;
     std::vector<float> weights;
     // The real rewards learned from, widened to include 0 (-1 <= rewardLow <= 0 <= rewardHigh <= 1):

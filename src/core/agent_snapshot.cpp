@@ -47,6 +47,11 @@ std::unique_ptr<Agent::Impl> restoreAgent(const AgentSnapshot& snap) {
     }
     requireSize(snap.weights.size(), count * s.weights.stride(), "weights");
     requireFinite(snap.weights, "weight");
+    for (std::size_t i = 0; i < snap.weights.size(); ++i) {
+        if (std::fabs(snap.weights[i]) > AgentSnapshot::kWeightLimit) {
+            corrupt("weight " + std::to_string(i) + " lies beyond +-1e20, which no learning reaches");
+        }
+    }
     for (std::size_t i = 0; i < count; ++i) {
         if (snap.featureKeys[i] >= s.rep.keyCount()) corrupt("feature " + std::to_string(i) + " has an out-of-range discrete key");
         for (std::uint32_t d = 0; d < nc; ++d) {

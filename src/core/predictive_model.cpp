@@ -6,6 +6,7 @@
 namespace verve::core {
 namespace {
 
+constexpr float kErrorLimit = 1e3f;  // applyDeltaRule's clamp on an output's error
 // The two error averages behind learning progress learn at these fractions of eta_pred: the fast
 // one follows recent errors, the slow one remembers older ones; noise moves both alike.
 constexpr float kFastFraction = 0.5f;
@@ -189,8 +190,13 @@ float PredictiveModel::fillTargets(const std::int32_t* discrete, const float* co
 
 void PredictiveModel::applyDeltaRule(WeightTable& w, const std::vector<ActiveFeature>& phi, std::uint32_t action,
                                      float rate) {
-    // One error per output, shared by every active feature: w += eta (d - y) x.
-    for (std::uint32_t j = 0; j < block_; ++j) targets_[j] = trained_[j] ? targets_[j] - outputs_[j] : 0.0f;
+    // One error per output, shared by every active feature: w += eta (d - y) x. Targets lie in
+    // [-1, 1] and a learned model's outputs near them; an error beyond kErrorLimit comes only from
+    // weights a hostile save brought (up to AgentSnapshot::kWeightLimit), and clamped, its steps
+    // stay below the float spacing at that limit: one update cannot overflow a weight to inf.
+    for (std::uint32_t j = 0; j < block_; ++j) {
+        targets_[j] = trained_[j] ? std::clamp(targets_[j] - outputs_[j], -kErrorLimit, kErrorLimit) : 0.0f;
+    }
     const float fastRate = rate * kFastFraction;
     const float slowRate = rate * kSlowFraction;
     const std::uint32_t offset = base_ + action * block_;

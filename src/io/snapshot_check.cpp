@@ -77,6 +77,12 @@ void checkFeatures(const AgentSnapshot& s) {
     if (features > 0 && s.stride == 0) fail("weight stride is 0");
     requireSize("weights", s.weights.size(), features * s.stride, "features x stride");
     requireFinite("weights", s.weights);
+    for (std::size_t i = 0; i < s.weights.size(); ++i) {
+        if (std::fabs(s.weights[i]) > AgentSnapshot::kWeightLimit) {
+            fail("weights[" + std::to_string(i) + "] = " + std::to_string(s.weights[i]) +
+                 " lies beyond +-1e20, which no learning reaches (corrupt or edited)");
+        }
+    }
 }
 
 void checkTraces(const AgentSnapshot& s) {

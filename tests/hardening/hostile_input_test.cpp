@@ -111,7 +111,15 @@ TEST(LoadedValues, HugeModelWeightsOnACircularSensorDoNotHang) {
     }
     const std::string xml = saveToString(agent);
     verve_agent_destroy(agent);
-    for (const char* weight : {"3.4e7", "-3.4e7", "1e30", "3.4e38"}) {
+    // Beyond +-1e20 (AgentSnapshot::kWeightLimit) a weight is refused as corrupt: from 1e28 on, one
+    // model update could overflow a weight to inf.
+    for (const char* weight : {"1e30", "3.4e38", "-2e20"}) {
+        const std::string bad = replaceList(xml, "weights", weight);
+        verve_agent* loaded = nullptr;
+        EXPECT_EQ(verve_agent_load_memory(bad.data(), bad.size(), &loaded), VERVE_ERROR_FORMAT) << weight;
+        EXPECT_EQ(loaded, nullptr);
+    }
+    for (const char* weight : {"3.4e7", "-3.4e7", "1e20", "-1e20"}) {
         const std::string bad = replaceList(xml, "weights", weight);
         verve_agent* loaded = nullptr;
         ASSERT_EQ(verve_agent_load_memory(bad.data(), bad.size(), &loaded), VERVE_OK) << weight << ": " << lastError();

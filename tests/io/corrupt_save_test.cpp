@@ -2,6 +2,7 @@
 #include <gtest/gtest.h>
 #include <pugixml.hpp>
 
+#include <cmath>
 #include <functional>
 #include <sstream>
 
@@ -152,6 +153,29 @@ TEST_F(CorruptSave, NumbersMustBeFinite) {
                   ErrorCode::Format, "'0.5.5'");
     expectRefused(edited([](pugi::xml_node r) { setFirstNumber(r.child("traces").child("values"), "-inf"); }),
                   ErrorCode::Format, "traces[0]");
+}
+
+// A weight no learning reaches is refused: from the ones a fuzzer found (1e28 to 4e33) one update
+// overflowed a model weight to inf, and the agent could then no longer be saved.
+TEST_F(CorruptSave, WeightsBeyondWhatLearningReachesAreRefused) {
+    expectRefused(edited([](pugi::xml_node r) { setFirstNumber(r.child("weights"), "3.8e33"); }),
+                  ErrorCode::Format, "beyond +-1e20");
+    expectRefused(edited([](pugi::xml_node r) { setFirstNumber(r.child("weights"), "-2e20"); }),
+                  ErrorCode::Format, "beyond +-1e20");
+}
+
+TEST_F(CorruptSave, WeightsAtTheLimitStillLearnAndSave) {
+    AgentDescriptor d = iotest::plannerDescriptor();
+    AgentSnapshot snap = iotest::trainedAgent(d, 60).snapshot();
+    for (std::size_t i = 0; i < snap.weights.size(); ++i) {
+        snap.weights[i] = (i % 3 == 0 ? -1.0f : 1.0f) * AgentSnapshot::kWeightLimit;
+    }
+    Agent agent(snap);
+    iotest::Feed feed(9);
+    iotest::drive(agent, feed, 200);
+    for (float w : agent.snapshot().weights) ASSERT_TRUE(std::isfinite(w));
+    const std::string saved = saveAgentToString(agent);  // and it loads again
+    EXPECT_NO_THROW(loadAgentFromMemory(saved.data(), saved.size()));
 }
 
 TEST_F(CorruptSave, SizesMustMatchTheDescriptor) {
