@@ -93,6 +93,11 @@ std::unique_ptr<Agent::Impl> restoreAgent(const AgentSnapshot& snap) {
     if (snap.hasPrevious) {
         requireSize(snap.previousActivations.size(), snap.previousFeatures.size(), "previous activations");
         requireFinite(snap.previousActivations, "previous activation");
+        // An RBF's activation lies in [0, 1]; a larger one would scale the next update's steps
+        // (a fuzzed save's activations overflowed model weights in one update).
+        for (float a : snap.previousActivations) {
+            if (a < 0.0f || a > 1.0f) corrupt("a previous activation lies outside [0, 1]");
+        }
         for (std::size_t i = 0; i < snap.previousFeatures.size(); ++i) {
             if (snap.previousFeatures[i] >= count) corrupt("previous step names a feature out of range");
             s.previous.push_back(core::ActiveFeature{snap.previousFeatures[i], snap.previousActivations[i]});

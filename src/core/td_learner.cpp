@@ -66,10 +66,11 @@ std::uint32_t TdLearner::uniformAllowed(Rng& rng, const std::uint8_t* allowed) c
 }
 
 void TdLearner::trainAndDecay(WeightTable& w, float delta, TdRates rates, float decay) {
-    // Learning never gets near a TD error of 1e12 (it bootstraps from bounded values), but
-    // weights a hostile save brings up to AgentSnapshot::kWeightLimit could make one: clamped, its
-    // steps stay below the float spacing at that limit, so no weight can be pushed past it.
-    delta = std::clamp(delta, -kDeltaLimit, kDeltaLimit);
+    // Learning never takes a weight step near kStepLimit (it bootstraps from bounded values), but
+    // weights a hostile save brings up to AgentSnapshot::kWeightLimit could make one: clamped, every
+    // step stays below half the float spacing at that limit, so no weight can be pushed past it.
+    const float fastest = std::max(std::fabs(rates.value), std::fabs(rates.policy));
+    if (fastest > 0.0f) delta = std::clamp(delta, -kStepLimit / fastest, kStepLimit / fastest);
     // A trace row [value, policy[A]] lines up with the first 1 + A weights of its feature's row.
     step_.assign(stride_, rates.policy * delta);
     step_[0] = rates.value * delta;

@@ -59,7 +59,7 @@ inline float bounded(float value, ValueBounds b) { return std::clamp(value, b.lo
 
 class TdLearner {
 public:
-    static constexpr float kDeltaLimit = 1e12f;  // trainAndDecay's clamp on a TD error
+    static constexpr float kStepLimit = 1e12f;  // trainAndDecay's clamp on a weight's step (traces <= 1)
     TdLearner(std::uint32_t numActions, float traceThreshold);
 
     float value(const WeightTable& w, const std::vector<ActiveFeature>& phi) const;

@@ -100,6 +100,10 @@ void checkPrevious(const AgentSnapshot& s) {
     requireSize("previousActivations", s.previousActivations.size(), s.previousFeatures.size(),
                 "one per previous feature");
     requireFinite("previousActivations", s.previousActivations);
+    for (std::size_t i = 0; i < s.previousActivations.size(); ++i) {
+        const float a = s.previousActivations[i];
+        if (a < 0.0f || a > 1.0f) fail("previousActivations[" + std::to_string(i) + "] = " + std::to_string(a) + " is outside [0, 1]");
+    }
     if (s.previousAction >= d.numActions) {
         fail("previousAction = " + std::to_string(s.previousAction) + " is out of range (the agent has " +
              std::to_string(d.numActions) + " actions)");

@@ -66,6 +66,18 @@ inline verve_agent_desc anyDescriptor(FuzzedDataProvider& in) {
     // A host's RBF budget: modest, so that every accepted agent is quick to build and a slow input
     // means a real hang (now and then beyond the limit, which must be refused).
     d.max_rbfs = in.ConsumeIntegralInRange<int>(0, 63) == 0 ? UINT64_MAX : in.ConsumeIntegralInRange<uint64_t>(1, 4000);
+    // ... and modest in weights too: a planning agent with many discrete values has thousands of
+    // model weights per RBF, and 4,000 such RBFs take seconds to save as XML under ASan.
+    uint64_t row = 1 + uint64_t{d.num_actions};
+    if (d.planning != 0) {
+        uint64_t outputs = 5 + d.num_continuous_sensors;
+        for (uint32_t i = 0; i < d.num_discrete_sensors && i < VERVE_MAX_DISCRETE_SENSORS; ++i) {
+            outputs += d.discrete_prediction == VERVE_DISCRETE_PREDICTION_ORDINAL ? 1 : d.discrete_sensor_values[i];
+        }
+        row += uint64_t{d.num_actions} * outputs;
+    }
+    const uint64_t weightBudget = 400000 / (row == 0 ? 1 : row);
+    if (d.max_rbfs > weightBudget && (d.max_rbfs != UINT64_MAX || row > 64)) d.max_rbfs = weightBudget == 0 ? 1 : weightBudget;
     return d;
 }
 

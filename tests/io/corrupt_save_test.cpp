@@ -164,6 +164,14 @@ TEST_F(CorruptSave, WeightsBeyondWhatLearningReachesAreRefused) {
                   ErrorCode::Format, "beyond +-1e20");
 }
 
+// An activation beyond 1 scaled a fuzzed save's first update until model weights reached 1e23.
+TEST_F(CorruptSave, PreviousActivationsMustLieWithinZeroAndOne) {
+    for (const char* bad : {"1e20", "-0.5", "1.5"}) {
+        expectRefused(edited([bad](pugi::xml_node r) { setFirstNumber(r.child("previous").child("activations"), bad); }),
+                      ErrorCode::Format, "outside [0, 1]");
+    }
+}
+
 TEST_F(CorruptSave, WeightsAtTheLimitStillLearnAndSave) {
     AgentDescriptor d = iotest::plannerDescriptor();
     AgentSnapshot snap = iotest::trainedAgent(d, 60).snapshot();
