@@ -121,7 +121,7 @@ void Agent::Impl::reserveFor(std::uint32_t features, std::size_t active) {
     if (desc.planning) planner.reserve(features);
 }
 
-float Agent::Impl::clampedReward(float reward) {
+float Agent::Impl::learnedReward(float reward) {
     const float r = std::clamp(reward, -1.0f, 1.0f);
     if (r != reward) {
         ++stats.clampedRewards;
@@ -130,11 +130,6 @@ float Agent::Impl::clampedReward(float reward) {
                        "agent, counted in stats.clamped_rewards)", static_cast<double>(reward));
         }
     }
-    return r;
-}
-
-float Agent::Impl::learnedReward(float reward) {
-    const float r = clampedReward(reward);
     if (learning && hasPrevious) brain->rewards.see(r);
     return r;
 }

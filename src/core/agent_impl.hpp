@@ -42,9 +42,8 @@ struct Agent::Impl {
     // need (scratch, traces, weights). Called before anything changes: an allocation failure
     // then leaves the agent as it was.
     void reserveFor(std::uint32_t features, std::size_t active);
-    // The observed reward within [-1, 1]; a clamp is counted and reported (once per agent).
-    float clampedReward(float reward);
-    // The clamped reward of the step that ends now; a learning agent adds it to its brain's range.
+    // The reward of the step that ends now, within [-1, 1] (a clamp is counted and reported, once
+    // per agent); a learning agent adds it to its brain's reward range.
     float learnedReward(float reward);
     // An update that needed an RBF the budget did not allow: counted and reported (once).
     void noteBudgetReached();

@@ -238,29 +238,38 @@ VG_METHOD(get_rbf_count) {
     return vg_variant_int(n);
 }
 
+/* A PoolRealArray of n floats for a C call to fill: open it, let the call write through the
+ * pointer, then close it into a variant (nil when the call failed). */
+static float* vg_reals_open(godot_pool_real_array* values, godot_pool_real_array_write_access** write, uint32_t n) {
+    vg_core->godot_pool_real_array_new(values);
+    vg_core->godot_pool_real_array_resize(values, (godot_int)n);
+    *write = vg_core->godot_pool_real_array_write(values);
+    return vg_core->godot_pool_real_array_write_access_ptr(*write);
+}
+
+static godot_variant vg_reals_close(godot_pool_real_array* values, godot_pool_real_array_write_access* write, int ok) {
+    godot_variant out;
+    vg_core->godot_pool_real_array_write_access_destroy(write);
+    if (ok) vg_core->godot_variant_new_pool_real_array(&out, values);
+    else out = vg_variant_nil();
+    vg_core->godot_pool_real_array_destroy(values);
+    return out;
+}
+
 VG_METHOD(get_action_probabilities) {
     vg_call c;
     verve_agent* a;
     verve_agent_desc d;
     godot_pool_real_array values;
     godot_pool_real_array_write_access* write;
-    godot_variant out;
-    int ok;
+    float* out;
     VG_UNUSED;
     verve_agent_desc_default(&d);
     if (!vg_begin(&c, user_data, "get_action_probabilities", argc, argv, 0, 0) || !vg_agent_handle(&c, &a) ||
         !vg_check(&c, verve_agent_get_desc(a, &d)))
         return vg_variant_nil();
-    vg_core->godot_pool_real_array_new(&values);
-    vg_core->godot_pool_real_array_resize(&values, (godot_int)d.num_actions);
-    write = vg_core->godot_pool_real_array_write(&values);
-    ok = vg_check(&c, verve_agent_get_action_probabilities(a, vg_core->godot_pool_real_array_write_access_ptr(write),
-                                                           d.num_actions));
-    vg_core->godot_pool_real_array_write_access_destroy(write);
-    if (ok) vg_core->godot_variant_new_pool_real_array(&out, &values);
-    else out = vg_variant_nil();
-    vg_core->godot_pool_real_array_destroy(&values);
-    return out;
+    out = vg_reals_open(&values, &write, d.num_actions);
+    return vg_reals_close(&values, write, vg_check(&c, verve_agent_get_action_probabilities(a, out, d.num_actions)));
 }
 
 VG_METHOD(get_stats) {
@@ -338,7 +347,7 @@ VG_METHOD(sample_values) {
     godot_array list;
     godot_pool_real_array values;
     godot_pool_real_array_write_access* write;
-    godot_variant out;
+    float* out;
     int ok = 1;
     VG_UNUSED;
     verve_agent_desc_default(&d);
@@ -364,17 +373,10 @@ VG_METHOD(sample_values) {
         vg_fail(&c, "%lu samples; at most %u", (unsigned long)total, VG_MAX_SAMPLES);
         return vg_variant_nil();
     }
-    vg_core->godot_pool_real_array_new(&values);
-    vg_core->godot_pool_real_array_resize(&values, (godot_int)total);
-    write = vg_core->godot_pool_real_array_write(&values);
-    ok = vg_check(&c, verve_agent_sample_values(a, axes, n_axes, discrete, n_discrete, continuous, n_continuous,
-                                                vg_core->godot_pool_real_array_write_access_ptr(write),
-                                                (uint32_t)total));
-    vg_core->godot_pool_real_array_write_access_destroy(write);
-    if (ok) vg_core->godot_variant_new_pool_real_array(&out, &values);
-    else out = vg_variant_nil();
-    vg_core->godot_pool_real_array_destroy(&values);
-    return out;
+    out = vg_reals_open(&values, &write, (uint32_t)total);
+    return vg_reals_close(&values, write,
+                          vg_check(&c, verve_agent_sample_values(a, axes, n_axes, discrete, n_discrete, continuous,
+                                                                 n_continuous, out, (uint32_t)total)));
 }
 
 VG_METHOD(has_agent) {
