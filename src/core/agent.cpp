@@ -64,7 +64,8 @@ StepConstants Agent::Impl::constantsFor(float dt) const {
 }
 
 void Agent::Impl::learnModel(float reward, const std::int32_t* discrete, float dt) {
-    const float error = model.train(weights, previous, previousAction, discrete, normalized.data(), reward, model.rate(dt));
+    const float* from = brain->modelPredictsChange ? previousContinuous.data() : nullptr;
+    const float error = model.train(weights, previous, previousAction, from, discrete, normalized.data(), reward, model.rate(dt));
     recordModelError(error);
 }
 
@@ -90,7 +91,8 @@ void Agent::Impl::plan(const StepConstants& k) {
     p.values = k.values;
     p.rewards = brain->rewards;
     p.onlyPlansThatEnd = !desc.continuousSensors.empty() && desc.curiosity == CuriosityMode::None;
-    const core::PlanResult result = planner.run(p, current, weights, rep, model, rng);
+    p.predictsChange = brain->modelPredictsChange;
+    const core::PlanResult result = planner.run(p, current, normalized.data(), weights, rep, model, rng);
     stats.planningSteps = result.steps;
     stats.curiosityReward = result.curiosity;
 }

@@ -67,6 +67,7 @@ std::unique_ptr<Agent::Impl> restoreAgent(const AgentSnapshot& snap) {
         corrupt("the reward range must satisfy -1 <= low <= 0 <= high <= 1");
     }
     s.brain->rewards = core::RewardRange{snap.rewardLow, snap.rewardHigh};
+    s.brain->modelPredictsChange = snap.modelPredictsChange;
 
     // Traces: optional (an empty list restores none).
     if (!snap.traceFeatures.empty() || !snap.traces.empty()) {
@@ -136,6 +137,7 @@ void snapshotBrain(const BrainState& brain, AgentSnapshot& snap) {
     snap.weights = brain.weights.data();
     snap.rewardLow = brain.rewards.low;
     snap.rewardHigh = brain.rewards.high;
+    snap.modelPredictsChange = brain.modelPredictsChange;
     snap.traceStride = 1 + brain.desc.numActions;
 }
 

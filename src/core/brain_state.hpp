@@ -19,6 +19,9 @@ struct BrainState {
     std::uint64_t bodiesMade = 0;  // numbers each new body's random stream
     // The real rewards every body has learned from: they bound the values TD errors bootstrap from.
     core::RewardRange rewards;
+    // Whether the model's continuous outputs are changes (core/predictive_model.hpp): true for every
+    // brain made now, false for one loaded from a save that predates them, which keeps its meaning.
+    bool modelPredictsChange = true;
 
     // Scratch of a batch update (batch.cpp): which group of the current call this brain is in.
     std::uint64_t batchToken = 0;

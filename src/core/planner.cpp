@@ -11,6 +11,7 @@ Planner::Planner(const AgentDescriptor& desc) : td_(desc.numActions, desc.traceT
     prediction_.discrete.resize(desc.discreteSensors.size());
     prediction_.continuous.resize(desc.continuousSensors.size());
     activations_.reserve(std::size_t(desc.numActions) + 1);  // chooseAction's scratch: the trace stride
+    where_.reserve(desc.continuousSensors.size());
 }
 
 void Planner::reserve(std::uint32_t features) {
@@ -19,34 +20,42 @@ void Planner::reserve(std::uint32_t features) {
     td_.reserve(features, StateRepresentation::foundCapacity(features));
 }
 
-bool Planner::reachesTheEnd(const PlanSettings& s, const std::vector<ActiveFeature>& start, const WeightTable& w,
-                            const StateRepresentation& rep, const PredictiveModel& model, Rng rng) {
+void Planner::predict(const PlanSettings& s, const WeightTable& w, const PredictiveModel& model, std::uint32_t action) {
+    model.predict(w, phi_, action, s.predictsChange ? where_.data() : nullptr, prediction_);
+}
+
+bool Planner::reachesTheEnd(const PlanSettings& s, const std::vector<ActiveFeature>& start,
+                            const float* startContinuous, const WeightTable& w, const StateRepresentation& rep,
+                            const PredictiveModel& model, Rng rng) {
     phi_.assign(start.begin(), start.end());
+    where_.assign(startContinuous, startContinuous + prediction_.continuous.size());
     float uncertainty = 0.0f;
     for (std::uint32_t step = 0; step < s.maxSteps && !phi_.empty(); ++step) {
         float value = 0.0f;
         const std::uint32_t action = td_.chooseAction(w, phi_, rng, activations_, value);
-        model.predict(w, phi_, action, prediction_);
+        predict(s, w, model, action);
         uncertainty = s.accumulate ? uncertainty + prediction_.uncertainty : prediction_.uncertainty;
         if (uncertainty > s.uncertaintyThreshold) return false;
         if (prediction_.terminal > 0.5f) return true;
         rep.find(prediction_.discrete.data(), prediction_.continuous.data(), next_);
         std::swap(phi_, next_);
+        where_.assign(prediction_.continuous.begin(), prediction_.continuous.end());
     }
     return false;
 }
 
-PlanResult Planner::run(const PlanSettings& s, const std::vector<ActiveFeature>& start, WeightTable& w,
-                        const StateRepresentation& rep, const PredictiveModel& model, Rng& rng) {
-    if (s.onlyPlansThatEnd && !reachesTheEnd(s, start, w, rep, model, rng)) return PlanResult{};
+PlanResult Planner::run(const PlanSettings& s, const std::vector<ActiveFeature>& start, const float* startContinuous,
+                        WeightTable& w, const StateRepresentation& rep, const PredictiveModel& model, Rng& rng) {
+    if (s.onlyPlansThatEnd && !reachesTheEnd(s, start, startContinuous, w, rep, model, rng)) return PlanResult{};
     PlanResult result;
     td_.clear();
     phi_.assign(start.begin(), start.end());
+    where_.assign(startContinuous, startContinuous + prediction_.continuous.size());
     float uncertainty = 0.0f;
     while (result.steps < s.maxSteps && !phi_.empty()) {
         float value = 0.0f;
         const std::uint32_t action = td_.chooseAction(w, phi_, rng, activations_, value);
-        model.predict(w, phi_, action, prediction_);
+        predict(s, w, model, action);
         uncertainty = s.accumulate ? uncertainty + prediction_.uncertainty : prediction_.uncertainty;
         const float bonus = curiosityReward(s.curiosity, s.curiosityFactor, prediction_);
         td_.mark(phi_, action, rep.featureCount());
@@ -72,6 +81,7 @@ PlanResult Planner::run(const PlanSettings& s, const std::vector<ActiveFeature>&
         rep.find(prediction_.discrete.data(), prediction_.continuous.data(), next_);
         td_.trainAndDecay(w, reward + s.gamma * bounded(td_.value(w, next_), s.values) - v, s.rates, s.traceDecay);
         std::swap(phi_, next_);
+        where_.assign(prediction_.continuous.begin(), prediction_.continuous.end());
     }
     return result;
 }

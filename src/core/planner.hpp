@@ -40,6 +40,7 @@ struct PlanSettings {
     ValueBounds values;       // TD errors bootstrap only from values within them (td_learner.hpp)
     RewardRange rewards;      // predicted rewards are clamped to the real ones seen
     bool onlyPlansThatEnd = false;  // learn only from plans that reach the end of the trial
+    bool predictsChange = true;     // the model's continuous outputs are changes (predictive_model.hpp)
 };
 
 struct PlanResult {
@@ -54,19 +55,25 @@ public:
     // Room for plans over `features` features: run() then allocates nothing.
     void reserve(std::uint32_t features);
 
-    PlanResult run(const PlanSettings& settings, const std::vector<ActiveFeature>& start, WeightTable& w,
-                   const StateRepresentation& rep, const PredictiveModel& model, Rng& rng);
+    // `start` and `startContinuous`: the real state a plan starts from, its features and its
+    // (normalised) continuous values.
+    PlanResult run(const PlanSettings& settings, const std::vector<ActiveFeature>& start, const float* startContinuous,
+                   WeightTable& w, const StateRepresentation& rep, const PredictiveModel& model, Rng& rng);
 
 private:
     // Whether the plan run() would make reaches a predicted end of the trial (it draws from a copy
     // of the random stream, so the plan that follows takes the same first steps).
-    bool reachesTheEnd(const PlanSettings& settings, const std::vector<ActiveFeature>& start, const WeightTable& w,
-                       const StateRepresentation& rep, const PredictiveModel& model, Rng rng);
+    bool reachesTheEnd(const PlanSettings& settings, const std::vector<ActiveFeature>& start,
+                       const float* startContinuous, const WeightTable& w, const StateRepresentation& rep,
+                       const PredictiveModel& model, Rng rng);
+    // Predicts the imagined state's successor into prediction_.
+    void predict(const PlanSettings& settings, const WeightTable& w, const PredictiveModel& model, std::uint32_t action);
 
     TdLearner td_;
     Prediction prediction_;
     std::vector<ActiveFeature> phi_, next_;  // scratch: the imagined state and its successor
     std::vector<float> activations_;
+    std::vector<float> where_;  // the imagined state's continuous values
 };
 
 }  // namespace verve::core

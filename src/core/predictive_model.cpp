@@ -100,11 +100,11 @@ void PredictiveModel::rawOutputs(const WeightTable& w, const std::vector<ActiveF
 }
 
 void PredictiveModel::predict(const WeightTable& w, const std::vector<ActiveFeature>& phi, std::uint32_t action,
-                              Prediction& out) const {
+                              const float* from, Prediction& out) const {
     rawOutputs(w, phi, action);
     out.continuous.resize(numContinuous_);
     for (std::uint32_t d = 0; d < numContinuous_; ++d) {
-        const float v = outputs_[d];
+        const float v = outputs_[d] + (from != nullptr ? from[d] : 0.0f);
         out.continuous[d] = circular_[d] ? wrapInto(v) : std::clamp(finite(v), -1.0f, 1.0f);
     }
     out.discrete.resize(discreteCounts_.size());
@@ -132,19 +132,20 @@ void PredictiveModel::predict(const WeightTable& w, const std::vector<ActiveFeat
     out.progress = slowError - fastError;
 }
 
-// Targets for one transition (discrete == nullptr: terminal, no next observation). Returns the
+// Targets for one transition (discrete == nullptr: terminal, no next observation; from: see train). Returns the
 // normalised squared error of the current outputs: each predicted quantity contributes one term
 // in [0, 1], and the terms are averaged. A continuous value one RBF width (sigma) off counts as
 // wholly wrong, as it would land on other features; a wrong discrete value counts 1, and the
 // reward's full range counts 1.
-float PredictiveModel::fillTargets(const std::int32_t* discrete, const float* continuous, float reward, bool terminal) {
+float PredictiveModel::fillTargets(const float* from, const std::int32_t* discrete, const float* continuous, float reward,
+                                   bool terminal) {
     std::fill(trained_.begin(), trained_.end(), std::uint8_t{0});
     lastUncertainty_ = std::clamp(1.0f - outputs_[certainty_], 0.0f, 1.0f);
     float sum = 0.0f;
     std::uint32_t terms = 0;
     if (!terminal) {
         for (std::uint32_t d = 0; d < numContinuous_; ++d) {
-            float diff = continuous[d] - outputs_[d];
+            float diff = continuous[d] - (outputs_[d] + (from != nullptr ? from[d] : 0.0f));
             if (circular_[d]) diff = wrapDifference(diff);
             targets_[d] = outputs_[d] + diff;
             trained_[d] = 1;
@@ -210,9 +211,9 @@ void PredictiveModel::applyDeltaRule(WeightTable& w, const std::vector<ActiveFea
 }
 
 float PredictiveModel::train(WeightTable& w, const std::vector<ActiveFeature>& phi, std::uint32_t action,
-                             const std::int32_t* discrete, const float* continuous, float reward, float rate) {
+                             const float* from, const std::int32_t* discrete, const float* continuous, float reward, float rate) {
     rawOutputs(w, phi, action);
-    const float error = fillTargets(discrete, continuous, reward, false);
+    const float error = fillTargets(from, discrete, continuous, reward, false);
     applyDeltaRule(w, phi, action, rate);
     return error;
 }
@@ -220,7 +221,7 @@ float PredictiveModel::train(WeightTable& w, const std::vector<ActiveFeature>& p
 float PredictiveModel::trainTerminal(WeightTable& w, const std::vector<ActiveFeature>& phi, std::uint32_t action,
                                      float reward, float rate) {
     rawOutputs(w, phi, action);
-    const float error = fillTargets(nullptr, nullptr, reward, true);
+    const float error = fillTargets(nullptr, nullptr, nullptr, reward, true);
     applyDeltaRule(w, phi, action, rate);
     return error;
 }

@@ -9,6 +9,7 @@
 // where discrete outputs are one per value of each discrete sensor (categorical) or one scalar
 // per sensor (ordinal, the original's choice). Certainties are stored as 1 - uncertainty so that
 // new, all-zero weights mean "fully uncertain": an unexplored state stops a plan.
+// Continuous outputs predict how far each value moves (train() says why), not where it lands.
 // Fast and slow are two running averages of the same error (learning progress = slow - fast).
 #pragma once
 #include <cstdint>
@@ -41,13 +42,19 @@ public:
     // Delta-rule rate eta_pred = (1 - e^(-dt/tau_pred)) / sum (tau 0: 1 / sum).
     float rate(float dt) const;
 
+    // `from`: the state's continuous values, when the model predicts changes (below); else nullptr.
     void predict(const WeightTable& w, const std::vector<ActiveFeature>& phi, std::uint32_t action,
-                 Prediction& out) const;
+                 const float* from, Prediction& out) const;
 
     // One real transition (phi, action) -> (observation, reward): trains every output and returns
     // the normalised squared error of the prediction made before training, in [0, 1].
+    // With `from` (the continuous values the transition started at) the continuous outputs learn
+    // the change, next - from; with nullptr the next values themselves (saves from before 0.2).
+    // A change is the same step all over an open space and jumps only at walls, which the RBFs
+    // fit; a position is a ramp they only approximate, and plans through blurred positions slip
+    // through walls (docs/planning.md, "Predicting changes").
     float train(WeightTable& w, const std::vector<ActiveFeature>& phi, std::uint32_t action,
-                const std::int32_t* discrete, const float* continuous, float reward, float rate);
+                const float* from, const std::int32_t* discrete, const float* continuous, float reward, float rate);
     // A terminal transition: no next observation, so only reward, terminal and the error
     // estimates learn.
     float trainTerminal(WeightTable& w, const std::vector<ActiveFeature>& phi, std::uint32_t action,
@@ -58,7 +65,7 @@ public:
 
 private:
     void rawOutputs(const WeightTable& w, const std::vector<ActiveFeature>& phi, std::uint32_t action) const;
-    float fillTargets(const std::int32_t* discrete, const float* continuous, float reward, bool terminal);
+    float fillTargets(const float* from, const std::int32_t* discrete, const float* continuous, float reward, bool terminal);
     void applyDeltaRule(WeightTable& w, const std::vector<ActiveFeature>& phi, std::uint32_t action, float rate);
 
     std::vector<std::uint32_t> discreteCounts_;

@@ -57,6 +57,7 @@ void transferPayload(Io& io, Snapshot& s, Flag& shortTerm, std::uint32_t version
         io.value("reward_low", s.rewardLow);
         io.value("reward_high", s.rewardHigh);
     }
+    if (version >= 3) io.flag("model_predicts_change", s.modelPredictsChange);
     io.flag("short_term_memory", shortTerm);
     if (!shortTerm) return;
     io.value("trace_stride", s.traceStride);

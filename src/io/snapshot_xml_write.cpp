@@ -97,6 +97,7 @@ void writeState(pugi::xml_node root, const AgentSnapshot& s) {
     setNumber(n, "last_dt", s.lastDt);
     setNumber(n, "reward_low", s.rewardLow);
     setNumber(n, "reward_high", s.rewardHigh);
+    n.append_attribute("continuous_model").set_value(s.modelPredictsChange ? "change" : "position");
     std::string rng;
     for (std::uint64_t word : s.rng) {
         if (!rng.empty()) rng += ' ';

@@ -158,32 +158,59 @@ TEST(BinarySave, BrainSavesLoadAsBrainsAndAsAgentsExactly) {
 
 // Version 1 (before the reward range) is version 2 without the range's 8 bytes after the weights.
 // Such a save loads with the widest range, [-1, 1], the value bound version 1 used.
-TEST(BinarySave, Version1SavesLoadWithTheWidestRewardRange) {
-    Agent agent = trainedAgent(iotest::plannerDescriptor(), 410);
-    AgentSnapshot snap = agent.snapshot();
-    ASSERT_LT(snap.rewardLow, 0.0f);  // a range narrower than [-1, 1], so the test can tell
-    ASSERT_LT(snap.rewardHigh, 1.0f);
-    std::string bytes = binarySave(agent);
-    char tail[12];
+// The save of `snap` as an older binary format version wrote it: the fields that version did not
+// have (after the weights: the reward range from version 2, the model flag from version 3) removed.
+std::string asVersion(std::string bytes, const AgentSnapshot& snap, std::uint32_t version) {
+    char tail[13];
     std::memcpy(tail, &snap.weights.back(), 4);
     std::memcpy(tail + 4, &snap.rewardLow, 4);
     std::memcpy(tail + 8, &snap.rewardHigh, 4);
-    const std::size_t at = bytes.find(std::string(tail, 12), io::kBinaryHeaderBytes);
-    ASSERT_NE(at, std::string::npos);
-    bytes.erase(at + 4, 8);
-    const std::uint32_t version = 1;
+    tail[12] = snap.modelPredictsChange ? 1 : 0;
+    const std::size_t at = bytes.find(std::string(tail, 13), io::kBinaryHeaderBytes);
+    if (at == std::string::npos) return {};
+    if (version == 1) bytes.erase(at + 4, 9);
+    if (version == 2) bytes.erase(at + 12, 1);
     const std::uint64_t payload = bytes.size() - io::kBinaryHeaderBytes;
     const std::uint64_t sum = io::payloadChecksum(bytes.data() + io::kBinaryHeaderBytes, payload);
     std::memcpy(&bytes[8], &version, 4);
     std::memcpy(&bytes[16], &payload, 8);
     std::memcpy(&bytes[24], &sum, 8);
+    return bytes;
+}
+
+TEST(BinarySave, Version1SavesLoadWithTheWidestRewardRange) {
+    Agent agent = trainedAgent(iotest::plannerDescriptor(), 410);
+    AgentSnapshot snap = agent.snapshot();
+    ASSERT_LT(snap.rewardLow, 0.0f);  // a range narrower than [-1, 1], so the test can tell
+    ASSERT_LT(snap.rewardHigh, 1.0f);
+    ASSERT_TRUE(snap.modelPredictsChange);
+    const std::string bytes = asVersion(binarySave(agent), snap, 1);
+    ASSERT_FALSE(bytes.empty());
 
     const AgentSnapshot loaded = loadAgentFromMemory(bytes.data(), bytes.size()).snapshot();
     EXPECT_EQ(loaded.rewardLow, -1.0f);
     EXPECT_EQ(loaded.rewardHigh, 1.0f);
+    EXPECT_FALSE(loaded.modelPredictsChange);
     snap.rewardLow = -1.0f;
     snap.rewardHigh = 1.0f;
+    snap.modelPredictsChange = false;
     expectSameSnapshot(snap, loaded);
+}
+
+// A save from before the model predicted changes keeps its model's meaning: positions.
+TEST(BinarySave, Version2SavesKeepAModelThatPredictsPositions) {
+    Agent agent = trainedAgent(iotest::plannerDescriptor(), 410);
+    AgentSnapshot snap = agent.snapshot();
+    const std::string bytes = asVersion(binarySave(agent), snap, 2);
+    ASSERT_FALSE(bytes.empty());
+    Agent loaded = loadAgentFromMemory(bytes.data(), bytes.size());
+    snap.modelPredictsChange = false;
+    expectSameSnapshot(snap, loaded.snapshot());
+    // It learns on as it did, and its next save says so.
+    iotest::Feed feed(5);
+    iotest::drive(loaded, feed, 50);
+    const std::string again = binarySave(loaded);
+    EXPECT_FALSE(loadAgentFromMemory(again.data(), again.size()).snapshot().modelPredictsChange);
 }
 
 TEST(BinarySave, BrainFilesLoadAsBrainsAndAsAgents) {

@@ -135,6 +135,8 @@ TEST_F(CorruptSave, BadAttributeValuesAreNamed) {
                   ErrorCode::Format, "rng");
     expectRefused(edited([](pugi::xml_node r) { r.child("state").attribute("rng").set_value("1 2 3"); }),
                   ErrorCode::Format, "rng");
+    expectRefused(edited([](pugi::xml_node r) { r.child("state").attribute("continuous_model").set_value("speed"); }),
+                  ErrorCode::Format, "continuous_model");
     for (const char* range : {"reward_low=0.5", "reward_low=-1.5", "reward_high=-0.25", "reward_high=2", "reward_low=nan"}) {
         const std::string edit = range;
         const std::string name = edit.substr(0, edit.find('='));

@@ -112,6 +112,26 @@ TEST(RoundTrip, RewardRangeIsKeptAndOldSavesGetTheWidest) {
     EXPECT_EQ(widest.rewardHigh, 1.0f);
 }
 
+// New agents' models predict how far continuous sensors move; a save from before that keeps a
+// model of where they land, and says so when saved again.
+TEST(RoundTrip, TheModelsMeaningIsKeptAndOldSavesPredictPositions) {
+    Agent agent = trainedAgent(iotest::plannerDescriptor(), 120);
+    const std::string xml = saveAgentToString(agent);
+    EXPECT_NE(xml.find("continuous_model=\"change\""), std::string::npos);
+    EXPECT_TRUE(loadAgentFromMemory(xml.data(), xml.size()).snapshot().modelPredictsChange);
+
+    pugi::xml_document doc;
+    ASSERT_TRUE(doc.load_string(xml.c_str()));
+    ASSERT_TRUE(doc.document_element().child("state").remove_attribute("continuous_model"));
+    std::ostringstream old;
+    doc.save(old);
+    Agent loaded = loadAgentFromMemory(old.str().data(), old.str().size());
+    EXPECT_FALSE(loaded.snapshot().modelPredictsChange);
+    iotest::Feed feed(5);
+    iotest::drive(loaded, feed, 50);
+    EXPECT_NE(saveAgentToString(loaded).find("continuous_model=\"position\""), std::string::npos);
+}
+
 TEST(RoundTrip, LearningSwitchIsKept) {
     Agent agent = trainedAgent(iotest::mixedDescriptor(), 100);
     agent.setLearning(false);

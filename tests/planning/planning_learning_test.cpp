@@ -107,22 +107,35 @@ TEST(PlanningLearning, PlanningFindsTheMovedGoalFasterThanRlAlone) {
     EXPECT_LE(planned, plain);
 }
 
+// Continuous maze #1 (the experiments table's task, default plans <= 10 steps): seeds 1-10, 50 runs
+// each, last 10 trials: planning 73.0 steps against 80.3 for RL alone, every late trial at the goal.
+// Before the model predicted changes (core/predictive_model.hpp) planning took 100.4: plans through
+// blurred positions slipped through walls and taught paths that do not exist.
+TEST(PlanningLearning, ContinuousPlanningNoSlowerThanRlOnMaze1) {
+    constexpr int kSeeds = 10;
+    const TaskInfo* maze1 = findTask("maze1-continuous");
+    auto plan = [](AgentDescriptor& d) { d.planning = true; };
+    double planned = 0.0, plain = 0.0, reached = 1.0;
+    for (std::uint64_t seed = 1; seed <= kSeeds; ++seed) {
+        const LearningCurve p = runExperiment(maze1->make, maze1->runs, maze1->trials, seed, plan, 2);
+        planned += windowMean(p.steps, 90, 100) / kSeeds;
+        plain += windowMean(runExperiment(maze1->make, maze1->runs, maze1->trials, seed, {}, 2).steps, 90, 100) / kSeeds;
+        reached = std::min(reached, windowMean(p.terminal, 90, 100));
+    }
+    std::printf("continuous maze1, last 10 trials over 10 seeds: planning %.1f, no planning %.1f steps\n", planned,
+                plain);
+    EXPECT_LE(planned, plain);
+    EXPECT_DOUBLE_EQ(reached, 1.0);
+}
+
 // Known gap (the KnownGap convention: tests/learning/hot_plate_learning_test.cpp; docs/planning.md):
-// with continuous sensors planning reaches the goal every time but is not faster than RL alone.
-// Maze #2 with plans <= 50 and threshold 0.1: over seeds 1, 11, ..., 91 (10 runs each) 441.7 vs
-// 418.6 steps on trials 41-50 (seed 1: 452 vs 437); with the default plans (<= 10, threshold 0.5)
-// 408.6, no slower. Maze #1 (the experiments table's task, default plans): 107 vs 79 steps on the
-// last 10 trials (seed 1; seed 11: 114 vs 79). The bar is "no slower than RL alone".
+// on continuous maze #2 planning reaches the goal every time but is not faster than RL alone.
+// Plans <= 50 with threshold 0.1 (this test, seed 1, 10 runs): 437.4 against 437.0 steps on trials
+// 41-50. With the default plans over seeds 101, 202, ..., 1010 (30 runs each): 505.8 against 469.9
+// (standard error of each mean ~20). The bar is "no slower than RL alone".
 TEST(KnownGapPlanningLearning, ContinuousPlanningNoSlowerThanRl) {
     const double planned = windowMean(maze2("maze2-continuous", 10, planContinuously).steps, 41, 51);
     const double plain = windowMean(maze2("maze2-continuous", 10).steps, 41, 51);
     std::printf("continuous maze2 trials 41-50: planning %.1f, no planning %.1f steps\n", planned, plain);
     EXPECT_LE(planned, plain);
-
-    const TaskInfo* maze1 = findTask("maze1-continuous");
-    auto plan = [](AgentDescriptor& d) { d.planning = true; };
-    const double planned1 = windowMean(runExperiment(maze1->make, maze1->runs, maze1->trials, 1, plan, 2).steps, 90, 100);
-    const double plain1 = windowMean(runExperiment(maze1->make, maze1->runs, maze1->trials, 1, {}, 2).steps, 90, 100);
-    std::printf("continuous maze1 last 10 trials: planning %.1f, no planning %.1f steps\n", planned1, plain1);
-    EXPECT_LE(planned1, plain1);
 }
