@@ -90,7 +90,10 @@ void Agent::Impl::plan(const StepConstants& k) {
     p.rates = k.rates;
     p.values = k.values;
     p.rewards = brain->rewards;
+    // Overlapping RBFs and no curiosity: plans teach only if they end, and the actor only at the
+    // real state (planner.hpp).
     p.onlyPlansThatEnd = !desc.continuousSensors.empty() && desc.curiosity == CuriosityMode::None;
+    p.actorLearnsAtStartOnly = p.onlyPlansThatEnd;
     p.predictsChange = brain->modelPredictsChange;
     const core::PlanResult result = planner.run(p, current, normalized.data(), weights, rep, model, rng);
     stats.planningSteps = result.steps;

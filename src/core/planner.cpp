@@ -48,6 +48,7 @@ PlanResult Planner::run(const PlanSettings& s, const std::vector<ActiveFeature>&
                         WeightTable& w, const StateRepresentation& rep, const PredictiveModel& model, Rng& rng) {
     if (s.onlyPlansThatEnd && !reachesTheEnd(s, start, startContinuous, w, rep, model, rng)) return PlanResult{};
     PlanResult result;
+    TdRates rates = s.rates;  // actorLearnsAtStartOnly: the actor rate drops to 0 after the first step
     td_.clear();
     phi_.assign(start.begin(), start.end());
     where_.assign(startContinuous, startContinuous + prediction_.continuous.size());
@@ -65,7 +66,7 @@ PlanResult Planner::run(const PlanSettings& s, const std::vector<ActiveFeature>&
             // Too uncertain to trust the predicted successor. A novelty-curious agent still learns
             // that this step leads into the unknown, as a terminal reward: the frontier attracts.
             if (s.curiosity == CuriosityMode::Novelty) {
-                td_.trainAndDecay(w, bonus - v, s.rates, 0.0f);
+                td_.trainAndDecay(w, bonus - v, rates, 0.0f);
                 result.curiosity += bonus;
                 ++result.steps;
             }
@@ -75,13 +76,14 @@ PlanResult Planner::run(const PlanSettings& s, const std::vector<ActiveFeature>&
         result.curiosity += bonus;
         ++result.steps;
         if (prediction_.terminal > 0.5f) {  // the trial ends: nothing to bootstrap from
-            td_.trainAndDecay(w, reward - v, s.rates, 0.0f);
+            td_.trainAndDecay(w, reward - v, rates, 0.0f);
             break;
         }
         rep.find(prediction_.discrete.data(), prediction_.continuous.data(), next_);
-        td_.trainAndDecay(w, reward + s.gamma * bounded(td_.value(w, next_), s.values) - v, s.rates, s.traceDecay);
+        td_.trainAndDecay(w, reward + s.gamma * bounded(td_.value(w, next_), s.values) - v, rates, s.traceDecay);
         std::swap(phi_, next_);
         where_.assign(prediction_.continuous.begin(), prediction_.continuous.end());
+        if (s.actorLearnsAtStartOnly) rates.policy = 0.0f;
     }
     return result;
 }

@@ -11,6 +11,11 @@
 // down too, and the optimism that drives plain RL toward new states is lost (docs/planning.md).
 // With discrete features an unvisited state shares nothing with the visited ones, so there every
 // plan teaches, as in the thesis: its backups are what push the agent toward the unexplored.
+// For the same reason such plans teach the actor only at the real state they start from, and the
+// critic all along: imagined actor updates, many per real step and all where plans end, reach
+// every overlapping RBF, so the preference a plan taught beside a wall (go up, to the goal) leaks
+// to the other side of it, where it leads into a dead end (docs/planning.md, "The actor learns
+// where the agent is").
 //
 // The plan keeps its own eligibility traces, cleared at each plan start: an imagined trajectory
 // must not leak into the real one's credit assignment, and vice versa. Imagined states never
@@ -40,6 +45,7 @@ struct PlanSettings {
     ValueBounds values;       // TD errors bootstrap only from values within them (td_learner.hpp)
     RewardRange rewards;      // predicted rewards are clamped to the real ones seen
     bool onlyPlansThatEnd = false;  // learn only from plans that reach the end of the trial
+    bool actorLearnsAtStartOnly = false;  // imagined states past the first train the critic only
     bool predictsChange = true;     // the model's continuous outputs are changes (predictive_model.hpp)
 };
 

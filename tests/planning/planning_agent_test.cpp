@@ -4,6 +4,7 @@
 #include <algorithm>
 #include <cmath>
 
+#include "tasks/corridor.hpp"
 #include "tasks/registry.hpp"
 #include "verve/agent.hpp"
 
@@ -106,6 +107,53 @@ TEST(PlanningAgent, ContinuousPlansTeachOnlyWhenTheyReachTheEnd) {
     }
     EXPECT_EQ(planned, 0u);
     EXPECT_GT(curiousPlanned, 0u);
+}
+
+// Such plans teach the actor only at the real state they start from, the critic all along (imagined
+// actor updates leaked through overlapping RBFs into dead ends: docs/planning.md). Real steps learn
+// nothing here, so every weight change of an update is its plan's.
+TEST(PlanningAgent, ContinuousPlansTeachTheActorOnlyWhereTheyStart) {
+    auto env = std::make_unique<Corridor>(12);  // short: a random walk finds the end
+    env->settings().planning = true;
+    env->settings().tauModel = 0.0f;
+    env->settings().maxPlanningSteps = 50;
+    env->settings().resolution = 30;  // narrow RBFs: a plan's states share few of them
+    AgentDescriptor d = env->agentDescriptor();
+    d.learnFromRealSteps = false;
+    d.seed = 7;
+    Agent agent(d);
+    Observation obs(d);
+    const std::uint32_t actorColumns = d.numActions;
+    int plansChecked = 0;
+    for (std::uint64_t trial = 0; trial < 20 && plansChecked < 20; ++trial) {
+        env->beginTrial(trial);
+        float reward = 0.0f;
+        for (std::uint32_t step = 0; step < env->maxStepsPerTrial(); ++step) {
+            env->observe(obs);
+            const AgentSnapshot before = agent.snapshot();
+            const std::uint32_t a = agent.update(reward, obs, 0.1f);
+            if (agent.stats().planningSteps >= 6) {
+                const AgentSnapshot after = agent.snapshot();
+                int criticRows = 0, actorRows = 0;
+                for (std::size_t row = 0; row < before.featureKeys.size(); ++row) {
+                    const float* x = before.weights.data() + row * before.stride;
+                    const float* y = after.weights.data() + row * after.stride;
+                    criticRows += x[0] != y[0];
+                    actorRows += !std::equal(x + 1, x + 1 + actorColumns, y + 1);
+                }
+                EXPECT_GT(actorRows, 0);
+                EXPECT_LT(actorRows, criticRows) << "a plan of " << agent.stats().planningSteps << " steps, " << before.featureKeys.size() << " RBFs";
+                ++plansChecked;
+            }
+            const StepResult r = env->act(a);
+            if (r.terminal) {
+                agent.endEpisode(r.reward);
+                break;
+            }
+            reward = r.reward;
+        }
+    }
+    EXPECT_GT(plansChecked, 0);
 }
 
 // Every real reward of this walk is -1 until the goal, where the trial ends with 0, so no policy can

@@ -108,9 +108,10 @@ TEST(PlanningLearning, PlanningFindsTheMovedGoalFasterThanRlAlone) {
 }
 
 // Continuous maze #1 (the experiments table's task, default plans <= 10 steps): seeds 1-10, 50 runs
-// each, last 10 trials: planning 73.0 steps against 80.3 for RL alone, every late trial at the goal.
-// Before the model predicted changes (core/predictive_model.hpp) planning took 100.4: plans through
-// blurred positions slipped through walls and taught paths that do not exist.
+// each, last 10 trials: planning 53.9 steps against 80.3 for RL alone, every late trial at the goal
+// (73.0 while imagined steps past the first also taught the actor; core/planner.hpp). Before the
+// model predicted changes (core/predictive_model.hpp) planning took 100.4: plans through blurred
+// positions slipped through walls and taught paths that do not exist.
 TEST(PlanningLearning, ContinuousPlanningNoSlowerThanRlOnMaze1) {
     constexpr int kSeeds = 10;
     const TaskInfo* maze1 = findTask("maze1-continuous");
@@ -128,11 +129,37 @@ TEST(PlanningLearning, ContinuousPlanningNoSlowerThanRlOnMaze1) {
     EXPECT_DOUBLE_EQ(reached, 1.0);
 }
 
+// Continuous maze #2 with the default plans (<= 10 steps), seeds 101, 202, ..., 1010, 10 runs each,
+// trials 41-50: planning 472.4 steps against 505.5 for RL alone (30 runs each: 461.6 against 469.9,
+// standard error of each mean ~20: no slower, not clearly faster). While imagined steps past the
+// first taught the actor, planning took 505.8 against 469.9 (30 runs): the preference for "up" that
+// plans taught beside the goal leaked through overlapping RBFs across the wall into the dead end
+// on its other side, where planning agents spent 5-10x RL's time (docs/planning.md).
+TEST(PlanningLearning, ContinuousPlanningNoSlowerThanRlOnMaze2) {
+    constexpr int kSeeds = 10;
+    auto plan = [](AgentDescriptor& d) { d.planning = true; };
+    const TaskInfo* maze2 = findTask("maze2-continuous");
+    double planned = 0.0, plain = 0.0, plannedReached = 0.0, plainReached = 0.0;
+    for (std::uint64_t seed = 101; seed <= 101 * kSeeds; seed += 101) {
+        const LearningCurve p = runExperiment(maze2->make, 10, 51, seed, plan, 2);
+        const LearningCurve r = runExperiment(maze2->make, 10, 51, seed, {}, 2);
+        planned += windowMean(p.steps, 41, 51) / kSeeds;
+        plain += windowMean(r.steps, 41, 51) / kSeeds;
+        plannedReached += windowMean(p.terminal, 41, 51) / kSeeds;
+        plainReached += windowMean(r.terminal, 41, 51) / kSeeds;
+    }
+    std::printf("continuous maze2, trials 41-50 over 10 seeds: planning %.1f, no planning %.1f steps; at the goal "
+                "%.3f and %.3f\n", planned, plain, plannedReached, plainReached);
+    EXPECT_LE(planned, plain);
+    // Both miss the goal in the same 3 of 1,000 late trials (10,000-step cap): planning no more often.
+    EXPECT_GE(plannedReached, plainReached);
+}
+
 // Known gap (the KnownGap convention: tests/learning/hot_plate_learning_test.cpp; docs/planning.md):
-// on continuous maze #2 planning reaches the goal every time but is not faster than RL alone.
-// Plans <= 50 with threshold 0.1 (this test, seed 1, 10 runs): 437.4 against 437.0 steps on trials
-// 41-50. With the default plans over seeds 101, 202, ..., 1010 (30 runs each): 505.8 against 469.9
-// (standard error of each mean ~20). The bar is "no slower than RL alone".
+// with long plans (<= 50 steps, threshold 0.1) planning on continuous maze #2 is still slower than
+// RL alone: this test (seed 1, 10 runs) 453.2 against 437.0 steps on trials 41-50 (437.4 before
+// plans taught the actor only where they start); seeds 101, ..., 1010, 10 runs each: 540.6 against
+// 505.5. The default plans (<= 10 steps) are gated above.
 TEST(KnownGapPlanningLearning, ContinuousPlanningNoSlowerThanRl) {
     const double planned = windowMean(maze2("maze2-continuous", 10, planContinuously).steps, 41, 51);
     const double plain = windowMean(maze2("maze2-continuous", 10).steps, 41, 51);
