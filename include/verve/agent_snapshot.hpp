@@ -34,7 +34,8 @@ struct AgentSnapshot {
     float rewardLow = -1.0f;
     float rewardHigh = 1.0f;
     // Whether the model's weights predict how far each continuous sensor moves (true: every agent
-    // made since 0.2) or where it lands (false: saves that predate the field, which keep working so).
+    // made now) or where it lands (false: saves that predate the field, 0.1.0 among them, which keep
+    // working so).
     bool modelPredictsChange = false;
 
     // Live eligibility traces: traceFeatures[j] with traceStride floats in traces (value, policy[A]).

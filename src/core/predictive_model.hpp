@@ -49,7 +49,7 @@ public:
     // One real transition (phi, action) -> (observation, reward): trains every output and returns
     // the normalised squared error of the prediction made before training, in [0, 1].
     // With `from` (the continuous values the transition started at) the continuous outputs learn
-    // the change, next - from; with nullptr the next values themselves (saves from before 0.2).
+    // the change, next - from; with nullptr the next values themselves (saves from before the change).
     // A change is the same step all over an open space and jumps only at walls, which the RBFs
     // fit; a position is a ramp they only approximate, and plans through blurred positions slip
     // through walls (docs/planning.md, "Predicting changes").

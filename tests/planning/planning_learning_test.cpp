@@ -108,8 +108,9 @@ TEST(PlanningLearning, PlanningFindsTheMovedGoalFasterThanRlAlone) {
     EXPECT_LE(planned, plain);
 }
 
-// Continuous maze #1 (the experiments table's task, default plans <= 10 steps): seeds 1-10, 50 runs
-// each, last 10 trials: planning 73.0 steps against 80.3 for RL alone, every late trial at the goal.
+// Continuous maze #1 (the experiments table's task, default plans <= 10 steps): seeds 1-10, 20 runs
+// each (the table's 50 cost 2.5x as much under ASan), last 10 trials: planning 72.7 steps against 80.3
+// for RL alone (50 runs each: 73.0 / 80.3), faster on 9 of the 10 seeds, every late trial at the goal.
 // Before the model predicted changes (core/predictive_model.hpp) planning took 100.4: plans through
 // blurred positions slipped through walls and taught paths that do not exist.
 TEST(PlanningLearning, ContinuousPlanningNoSlowerThanRlOnMaze1) {
@@ -118,9 +119,9 @@ TEST(PlanningLearning, ContinuousPlanningNoSlowerThanRlOnMaze1) {
     auto plan = [](AgentDescriptor& d) { d.planning = true; };
     double planned = 0.0, plain = 0.0, reached = 1.0;
     for (std::uint64_t seed = 1; seed <= kSeeds; ++seed) {
-        const LearningCurve p = runExperiment(maze1->make, maze1->runs, maze1->trials, seed, plan, 2);
+        const LearningCurve p = runExperiment(maze1->make, 20, maze1->trials, seed, plan, 2);
         planned += windowMean(p.steps, 90, 100) / kSeeds;
-        plain += windowMean(runExperiment(maze1->make, maze1->runs, maze1->trials, seed, {}, 2).steps, 90, 100) / kSeeds;
+        plain += windowMean(runExperiment(maze1->make, 20, maze1->trials, seed, {}, 2).steps, 90, 100) / kSeeds;
         reached = std::min(reached, windowMean(p.terminal, 90, 100));
     }
     std::printf("continuous maze1, last 10 trials over 10 seeds: planning %.1f, no planning %.1f steps\n", planned,
