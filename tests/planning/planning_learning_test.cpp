@@ -3,6 +3,8 @@
 #include <gtest/gtest.h>
 
 #include <algorithm>
+#include <cstdio>
+#include <vector>
 
 #include "tasks/maze.hpp"
 #include "tasks/registry.hpp"
@@ -14,6 +16,30 @@ namespace {
 
 LearningCurve maze2(const char* task, std::uint32_t runs, const DescriptorOverride& overrides = {}) {
     return runExperiment(findTask(task)->make, runs, 51, 1, overrides, 2);
+}
+
+// Planning with the default plans against RL alone on `task`, `runs` runs per seed: steps over
+// trials [first, last) and the share of them at the goal, averaged over the seeds, and the worst
+// seed's share with planning.
+struct AgainstRl {
+    double planned = 0.0, plain = 0.0, plannedReached = 0.0, plainReached = 0.0, worstPlannedReached = 1.0;
+};
+AgainstRl planningAgainstRl(const char* task, std::uint32_t runs, std::uint32_t trials,
+                            const std::vector<std::uint64_t>& seeds, std::size_t first, std::size_t last) {
+    const TaskInfo* info = findTask(task);
+    auto plan = [](AgentDescriptor& d) { d.planning = true; };
+    const double n = static_cast<double>(seeds.size());
+    AgainstRl a;
+    for (std::uint64_t seed : seeds) {
+        const LearningCurve p = runExperiment(info->make, runs, trials, seed, plan, 2);
+        const LearningCurve r = runExperiment(info->make, runs, trials, seed, {}, 2);
+        a.planned += windowMean(p.steps, first, last) / n;
+        a.plain += windowMean(r.steps, first, last) / n;
+        a.plannedReached += windowMean(p.terminal, first, last) / n;
+        a.plainReached += windowMean(r.terminal, first, last) / n;
+        a.worstPlannedReached = std::min(a.worstPlannedReached, windowMean(p.terminal, first, last));
+    }
+    return a;
 }
 
 }  // namespace
@@ -115,20 +141,11 @@ TEST(PlanningLearning, PlanningFindsTheMovedGoalFasterThanRlAlone) {
 // Before the model predicted changes (core/predictive_model.hpp) planning took 100.4: plans through
 // blurred positions slipped through walls and taught paths that do not exist.
 TEST(PlanningLearning, ContinuousPlanningNoSlowerThanRlOnMaze1) {
-    constexpr int kSeeds = 10;
-    const TaskInfo* maze1 = findTask("maze1-continuous");
-    auto plan = [](AgentDescriptor& d) { d.planning = true; };
-    double planned = 0.0, plain = 0.0, reached = 1.0;
-    for (std::uint64_t seed = 1; seed <= kSeeds; ++seed) {
-        const LearningCurve p = runExperiment(maze1->make, 20, maze1->trials, seed, plan, 2);
-        planned += windowMean(p.steps, 90, 100) / kSeeds;
-        plain += windowMean(runExperiment(maze1->make, 20, maze1->trials, seed, {}, 2).steps, 90, 100) / kSeeds;
-        reached = std::min(reached, windowMean(p.terminal, 90, 100));
-    }
-    std::printf("continuous maze1, last 10 trials over 10 seeds: planning %.1f, no planning %.1f steps\n", planned,
-                plain);
-    EXPECT_LE(planned, plain);
-    EXPECT_DOUBLE_EQ(reached, 1.0);
+    const AgainstRl a = planningAgainstRl("maze1-continuous", 20, 100, {1, 2, 3, 4, 5, 6, 7, 8, 9, 10}, 90, 100);
+    std::printf("continuous maze1, last 10 trials over 10 seeds: planning %.1f, no planning %.1f steps\n", a.planned,
+                a.plain);
+    EXPECT_LE(a.planned, a.plain);
+    EXPECT_DOUBLE_EQ(a.worstPlannedReached, 1.0);
 }
 
 // Continuous maze #2 with the default plans (<= 10 steps), seeds 101, 202, ..., 1010, 10 runs each,
@@ -138,23 +155,13 @@ TEST(PlanningLearning, ContinuousPlanningNoSlowerThanRlOnMaze1) {
 // plans taught beside the goal leaked through overlapping RBFs across the wall into the dead end
 // on its other side, where planning agents spent 5-10x RL's time (docs/planning.md).
 TEST(PlanningLearning, ContinuousPlanningNoSlowerThanRlOnMaze2) {
-    constexpr int kSeeds = 10;
-    auto plan = [](AgentDescriptor& d) { d.planning = true; };
-    const TaskInfo* maze2 = findTask("maze2-continuous");
-    double planned = 0.0, plain = 0.0, plannedReached = 0.0, plainReached = 0.0;
-    for (std::uint64_t seed = 101; seed <= 101 * kSeeds; seed += 101) {
-        const LearningCurve p = runExperiment(maze2->make, 10, 51, seed, plan, 2);
-        const LearningCurve r = runExperiment(maze2->make, 10, 51, seed, {}, 2);
-        planned += windowMean(p.steps, 41, 51) / kSeeds;
-        plain += windowMean(r.steps, 41, 51) / kSeeds;
-        plannedReached += windowMean(p.terminal, 41, 51) / kSeeds;
-        plainReached += windowMean(r.terminal, 41, 51) / kSeeds;
-    }
+    const AgainstRl a =
+        planningAgainstRl("maze2-continuous", 10, 51, {101, 202, 303, 404, 505, 606, 707, 808, 909, 1010}, 41, 51);
     std::printf("continuous maze2, trials 41-50 over 10 seeds: planning %.1f, no planning %.1f steps; at the goal "
-                "%.3f and %.3f\n", planned, plain, plannedReached, plainReached);
-    EXPECT_LE(planned, plain);
+                "%.3f and %.3f\n", a.planned, a.plain, a.plannedReached, a.plainReached);
+    EXPECT_LE(a.planned, a.plain);
     // Both miss the goal in the same 3 of 1,000 late trials (10,000-step cap): planning no more often.
-    EXPECT_GE(plannedReached, plainReached);
+    EXPECT_GE(a.plannedReached, a.plainReached);
 }
 
 // Known gap (the KnownGap convention: tests/learning/hot_plate_learning_test.cpp; docs/planning.md):

@@ -131,22 +131,34 @@ TEST(PredictiveModel, NoiseKeepsUncertaintyButNotProgress) {
     EXPECT_LT(std::abs(progressSum / 1000.0f), 0.05f);
 }
 
-TEST(PredictiveModel, ContinuousPredictionsConvergeWithTheDeltaRule) {
-    Fixture f(lineAgent());
-    // x -> x + 0.1 on a few sample points: the linear network over RBFs fits it.
-    const float xs[] = {-0.6f, -0.2f, 0.2f, 0.6f};
+namespace {
+
+// x -> x + 0.1 on four sample points, 300 epochs; `change`: the model learns the step, else the
+// position. Returns the sample points' features.
+constexpr float kSamplePoints[] = {-0.6f, -0.2f, 0.2f, 0.6f};
+std::vector<std::vector<ActiveFeature>> trainOnAStepRight(Fixture& f, bool change) {
     std::vector<std::vector<ActiveFeature>> phis;
-    for (float x : xs) phis.push_back(f.features({}, {x}));
+    for (float x : kSamplePoints) phis.push_back(f.features({}, {x}));
     for (int epoch = 0; epoch < 300; ++epoch) {
         for (std::size_t i = 0; i < 4; ++i) {
-            const float next = xs[i] + 0.1f;
-            f.model.train(f.weights, phis[i], 0, nullptr, nullptr, &next, 0.0f, f.model.rate(0.1f));
+            const float next = kSamplePoints[i] + 0.1f;
+            f.model.train(f.weights, phis[i], 0, change ? &kSamplePoints[i] : nullptr, nullptr, &next, 0.0f,
+                          f.model.rate(0.1f));
         }
     }
+    return phis;
+}
+
+}  // namespace
+
+TEST(PredictiveModel, ContinuousPredictionsConvergeWithTheDeltaRule) {
+    Fixture f(lineAgent());
+    // The linear network over RBFs fits the positions at the sample points.
+    const auto phis = trainOnAStepRight(f, false);
     Prediction p;
     for (std::size_t i = 0; i < 4; ++i) {
         f.model.predict(f.weights, phis[i], 0, nullptr, p);
-        EXPECT_NEAR(p.continuous[0], xs[i] + 0.1f, 0.02f);
+        EXPECT_NEAR(p.continuous[0], kSamplePoints[i] + 0.1f, 0.02f);
         EXPECT_LT(p.uncertainty, 0.1f);
     }
 }
@@ -157,15 +169,7 @@ TEST(PredictiveModel, ContinuousPredictionsConvergeWithTheDeltaRule) {
 TEST(PredictiveModel, ChangesGeneraliseWherePositionsBlur) {
     auto worstError = [](bool change) {
         Fixture f(lineAgent());
-        const float xs[] = {-0.6f, -0.2f, 0.2f, 0.6f};
-        std::vector<std::vector<ActiveFeature>> phis;
-        for (float x : xs) phis.push_back(f.features({}, {x}));
-        for (int epoch = 0; epoch < 300; ++epoch) {
-            for (std::size_t i = 0; i < 4; ++i) {
-                const float next = xs[i] + 0.1f;
-                f.model.train(f.weights, phis[i], 0, change ? &xs[i] : nullptr, nullptr, &next, 0.0f, f.model.rate(0.1f));
-            }
-        }
+        trainOnAStepRight(f, change);
         float worst = 0.0f;
         Prediction p;
         for (float x : {-0.4f, 0.0f, 0.4f}) {
