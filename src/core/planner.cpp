@@ -11,7 +11,6 @@ Planner::Planner(const AgentDescriptor& desc) : td_(desc.numActions, desc.traceT
     prediction_.discrete.resize(desc.discreteSensors.size());
     prediction_.continuous.resize(desc.continuousSensors.size());
     activations_.reserve(std::size_t(desc.numActions) + 1);  // chooseAction's scratch: the trace stride
-    where_.reserve(desc.continuousSensors.size());
 }
 
 void Planner::reserve(std::uint32_t features) {
@@ -20,15 +19,20 @@ void Planner::reserve(std::uint32_t features) {
     td_.reserve(features, StateRepresentation::foundCapacity(features));
 }
 
+void Planner::startAt(const std::vector<ActiveFeature>& start, const float* startContinuous) {
+    phi_.assign(start.begin(), start.end());
+    std::copy_n(startContinuous, prediction_.continuous.size(), prediction_.continuous.begin());
+}
+
 void Planner::predict(const PlanSettings& s, const WeightTable& w, const PredictiveModel& model, std::uint32_t action) {
-    model.predict(w, phi_, action, s.predictsChange ? where_.data() : nullptr, prediction_);
+    // A change model adds to the imagined state's values, which the prediction overwrites in place.
+    model.predict(w, phi_, action, s.predictsChange ? prediction_.continuous.data() : nullptr, prediction_);
 }
 
 bool Planner::reachesTheEnd(const PlanSettings& s, const std::vector<ActiveFeature>& start,
                             const float* startContinuous, const WeightTable& w, const StateRepresentation& rep,
                             const PredictiveModel& model, Rng rng) {
-    phi_.assign(start.begin(), start.end());
-    where_.assign(startContinuous, startContinuous + prediction_.continuous.size());
+    startAt(start, startContinuous);
     float uncertainty = 0.0f;
     for (std::uint32_t step = 0; step < s.maxSteps && !phi_.empty(); ++step) {
         float value = 0.0f;
@@ -39,7 +43,6 @@ bool Planner::reachesTheEnd(const PlanSettings& s, const std::vector<ActiveFeatu
         if (prediction_.terminal > 0.5f) return true;
         rep.find(prediction_.discrete.data(), prediction_.continuous.data(), next_);
         std::swap(phi_, next_);
-        where_.assign(prediction_.continuous.begin(), prediction_.continuous.end());
     }
     return false;
 }
@@ -50,8 +53,7 @@ PlanResult Planner::run(const PlanSettings& s, const std::vector<ActiveFeature>&
     PlanResult result;
     TdRates rates = s.rates;  // actorLearnsAtStartOnly: the actor rate drops to 0 after the first step
     td_.clear();
-    phi_.assign(start.begin(), start.end());
-    where_.assign(startContinuous, startContinuous + prediction_.continuous.size());
+    startAt(start, startContinuous);
     float uncertainty = 0.0f;
     while (result.steps < s.maxSteps && !phi_.empty()) {
         float value = 0.0f;
@@ -82,7 +84,6 @@ PlanResult Planner::run(const PlanSettings& s, const std::vector<ActiveFeature>&
         rep.find(prediction_.discrete.data(), prediction_.continuous.data(), next_);
         td_.trainAndDecay(w, reward + s.gamma * bounded(td_.value(w, next_), s.values) - v, rates, s.traceDecay);
         std::swap(phi_, next_);
-        where_.assign(prediction_.continuous.begin(), prediction_.continuous.end());
         if (s.actorLearnsAtStartOnly) rates.policy = 0.0f;
     }
     return result;

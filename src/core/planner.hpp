@@ -72,6 +72,9 @@ private:
     bool reachesTheEnd(const PlanSettings& settings, const std::vector<ActiveFeature>& start,
                        const float* startContinuous, const WeightTable& w, const StateRepresentation& rep,
                        const PredictiveModel& model, Rng rng);
+    // The imagined state becomes the real one a plan starts from: its features in phi_, its
+    // continuous values in prediction_.continuous (where every prediction then leaves the next's).
+    void startAt(const std::vector<ActiveFeature>& start, const float* startContinuous);
     // Predicts the imagined state's successor into prediction_.
     void predict(const PlanSettings& settings, const WeightTable& w, const PredictiveModel& model, std::uint32_t action);
 
@@ -79,7 +82,6 @@ private:
     Prediction prediction_;
     std::vector<ActiveFeature> phi_, next_;  // scratch: the imagined state and its successor
     std::vector<float> activations_;
-    std::vector<float> where_;  // the imagined state's continuous values
 };
 
 }  // namespace verve::core

@@ -43,6 +43,7 @@ public:
     float rate(float dt) const;
 
     // `from`: the state's continuous values, when the model predicts changes (below); else nullptr.
+    // It may be out.continuous itself: each value is read before it is overwritten.
     void predict(const WeightTable& w, const std::vector<ActiveFeature>& phi, std::uint32_t action,
                  const float* from, Prediction& out) const;
 
