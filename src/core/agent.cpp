@@ -90,10 +90,13 @@ void Agent::Impl::plan(const StepConstants& k) {
     p.rates = k.rates;
     p.values = k.values;
     p.rewards = brain->rewards;
+    const bool curious = desc.curiosity != CuriosityMode::None;
     // Overlapping RBFs and no curiosity: plans teach only if they end, and the actor only at the
-    // real state (planner.hpp).
-    p.onlyPlansThatEnd = !desc.continuousSensors.empty() && desc.curiosity == CuriosityMode::None;
+    // real state. Discrete features and no curiosity: a first imagined step that stays at the real
+    // state is not replayed (planner.hpp).
+    p.onlyPlansThatEnd = !desc.continuousSensors.empty() && !curious;
     p.actorLearnsAtStartOnly = p.onlyPlansThatEnd;
+    p.replaysNoStayAtStart = desc.continuousSensors.empty() && !curious;
     p.predictsChange = brain->modelPredictsChange;
     const core::PlanResult result = planner.run(p, current, normalized.data(), weights, rep, model, rng);
     stats.planningSteps = result.steps;

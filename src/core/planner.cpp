@@ -6,6 +6,15 @@
 #include "core/curiosity.hpp"
 
 namespace verve::core {
+namespace {
+
+bool sameFeatures(const std::vector<ActiveFeature>& a, const std::vector<ActiveFeature>& b) {
+    return std::equal(a.begin(), a.end(), b.begin(), b.end(), [](const ActiveFeature& x, const ActiveFeature& y) {
+        return x.index == y.index && x.activation == y.activation;
+    });
+}
+
+}  // namespace
 
 Planner::Planner(const AgentDescriptor& desc) : td_(desc.numActions, desc.traceThreshold) {
     prediction_.discrete.resize(desc.discreteSensors.size());
@@ -55,16 +64,21 @@ PlanResult Planner::run(const PlanSettings& s, const std::vector<ActiveFeature>&
     td_.clear();
     startAt(start, startContinuous);
     float uncertainty = 0.0f;
-    while (result.steps < s.maxSteps && !phi_.empty()) {
+    for (std::uint32_t query = 0; query < s.maxSteps && !phi_.empty(); ++query) {
         float value = 0.0f;
         const std::uint32_t action = td_.chooseAction(w, phi_, rng, activations_, value);
         predict(s, w, model, action);
         uncertainty = s.accumulate ? uncertainty + prediction_.uncertainty : prediction_.uncertainty;
+        const bool trusted = uncertainty <= s.uncertaintyThreshold;
+        const bool ends = prediction_.terminal > 0.5f;
+        if (trusted && !ends) {
+            rep.find(prediction_.discrete.data(), prediction_.continuous.data(), next_);
+            if (s.replaysNoStayAtStart && result.steps == 0 && sameFeatures(phi_, next_)) continue;
+        }
         const float bonus = curiosityReward(s.curiosity, s.curiosityFactor, prediction_);
         td_.mark(phi_, action, rep.featureCount());
         const float v = bounded(value, s.values);
-
-        if (uncertainty > s.uncertaintyThreshold) {
+        if (!trusted) {
             // Too uncertain to trust the predicted successor. A novelty-curious agent still learns
             // that this step leads into the unknown, as a terminal reward: the frontier attracts.
             if (s.curiosity == CuriosityMode::Novelty) {
@@ -77,11 +91,10 @@ PlanResult Planner::run(const PlanSettings& s, const std::vector<ActiveFeature>&
         const float reward = std::clamp(prediction_.reward, s.rewards.low, s.rewards.high) + bonus;
         result.curiosity += bonus;
         ++result.steps;
-        if (prediction_.terminal > 0.5f) {  // the trial ends: nothing to bootstrap from
+        if (ends) {  // the trial ends: nothing to bootstrap from
             td_.trainAndDecay(w, reward - v, rates, 0.0f);
             break;
         }
-        rep.find(prediction_.discrete.data(), prediction_.continuous.data(), next_);
         td_.trainAndDecay(w, reward + s.gamma * bounded(td_.value(w, next_), s.values) - v, rates, s.traceDecay);
         std::swap(phi_, next_);
         if (s.actorLearnsAtStartOnly) rates.policy = 0.0f;

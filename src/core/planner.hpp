@@ -17,6 +17,19 @@
 // to the other side of it, where it leads into a dead end (docs/planning.md, "The actor learns
 // where the agent is").
 //
+// An imagined step from the real state that stays there (a lever of a one-state task, a wall
+// bumped from where the agent stands) is not learned; the plan draws another action from the real
+// state instead, within the same cap. The model's guess of that step is the last real outcome of
+// the same situation, and replaying it every real step counts one sample many times: on a bandit
+// whose levers' payoffs are noisy (and clamped to the reward range, so a good lever's last payoff
+// reads as certain) planning agents committed to a lever after a few lucky pulls (docs/experiments.md,
+// "Planning on every task"); in a one-state task plans now learn nothing. Ending the plan there
+// instead cost the discrete mazes early learning (maze #2, first 10 trials: 222 -> 430 steps; skipping,
+// 258). Deeper imagined steps that stay in place still teach: that is where plans learn about
+// walls away from the agent. Only plans of discrete, non-curious agents skip such steps: plans that must reach the end of the trial (above)
+// learn only from paths that lead somewhere, and a curious agent's bonus is what its plans are for
+// (with the skip, the curiosity grid's curious agents lost 1.2 of their reward over 10 seeds).
+//
 // The plan keeps its own eligibility traces, cleared at each plan start: an imagined trajectory
 // must not leak into the real one's credit assignment, and vice versa. Imagined states never
 // allocate RBFs (StateRepresentation::find).
@@ -46,6 +59,7 @@ struct PlanSettings {
     RewardRange rewards;      // predicted rewards are clamped to the real ones seen
     bool onlyPlansThatEnd = false;  // learn only from plans that reach the end of the trial
     bool actorLearnsAtStartOnly = false;  // imagined states past the first train the critic only
+    bool replaysNoStayAtStart = false;    // a first imagined step that stays where it is is not learned
     bool predictsChange = true;     // the model's continuous outputs are changes (predictive_model.hpp)
 };
 

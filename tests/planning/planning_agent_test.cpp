@@ -156,6 +156,48 @@ TEST(PlanningAgent, ContinuousPlansTeachTheActorOnlyWhereTheyStart) {
     EXPECT_GT(plansChecked, 0);
 }
 
+// An imagined step that stays at the real state is not learned (core/planner.hpp): in a one-state
+// task (a bandit) every imagined step does, so plans learn nothing. Both agents below pull the lever
+// each step's mask allows (plans draw their imagined actions from all three), so with the same
+// rewards a planning agent's weights stay exactly those of one without planning. A curious agent's
+// plans still learn there: their curiosity bonus is what they are for.
+TEST(PlanningAgent, ImaginedStepsThatStayAtTheRealStateAreNotLearned) {
+    AgentDescriptor d;
+    d.numActions = 3;
+    d.planning = true;
+    d.tauModel = 0.0f;
+    d.seed = 3;
+    Agent planner(d);
+    d.curiosity = CuriosityMode::Novelty;
+    Agent curious(d);
+    d.curiosity = CuriosityMode::None;
+    d.planning = false;
+    Agent plain(d);
+    Observation obs(d);
+    std::uint32_t curiousSteps = 0;
+    float reward = 0.0f;
+    for (std::uint32_t pull = 0; pull < 60; ++pull) {
+        std::uint8_t allowed[3] = {0, 0, 0};
+        allowed[pull % 3] = 1;
+        const ActionMask mask{allowed, 3};
+        ASSERT_EQ(planner.update(reward, obs.view(), 0.1f, mask), pull % 3);
+        ASSERT_EQ(plain.update(reward, obs.view(), 0.1f, mask), pull % 3);
+        curious.update(reward, obs.view(), 0.1f, mask);
+        EXPECT_EQ(planner.stats().planningSteps, 0u) << "pull " << pull;
+        curiousSteps += curious.stats().planningSteps;
+        reward = pull % 3 == 2 ? 1.0f : -0.5f;
+    }
+    const AgentSnapshot p = planner.snapshot(), q = plain.snapshot();
+    ASSERT_EQ(p.featureKeys.size(), q.featureKeys.size());
+    const std::uint32_t learned = 1 + d.numActions;  // critic and actor columns (the planner's rows add the model's)
+    for (std::size_t row = 0; row < p.featureKeys.size(); ++row) {
+        EXPECT_TRUE(std::equal(p.weights.data() + row * p.stride, p.weights.data() + row * p.stride + learned,
+                               q.weights.data() + row * q.stride))
+            << "row " << row;
+    }
+    EXPECT_GT(curiousSteps, 0u);
+}
+
 // Every real reward of this walk is -1 until the goal, where the trial ends with 0, so no policy can
 // earn a value above 0. Unnormalised RBFs plus TD(lambda) still push the weights' sum above 0 at
 // some states (+4.9 over these runs before values were bounded by the rewards seen); what the agent
