@@ -67,7 +67,8 @@ struct AgentDescriptor {
     // Predictive model, planning and curiosity (thesis chapter 2 "Efficient learning", chapter 4).
     bool planning = false;                     // learn a model and plan after each real step
     float tauModel = 0.0f;                     // model learning time constant (0: rate 1)
-    std::uint32_t maxPlanningSteps = 10;       // cap on imagined steps per real step
+    std::uint32_t maxPlanningSteps = 10;       // cap on imagined steps per real step (with continuous
+                                               // sensors and no curiosity also tauDiscount / dt: docs/planning.md)
     // Uncertainty is a normalised squared error in [0, 1] per predicted quantity (docs/planning.md),
     // a different scale from the original's raw error: its 0.1 and 3 were re-measured here.
     float planningUncertaintyThreshold = 0.5f; // a plan stops once accumulated uncertainty exceeds it

@@ -15,6 +15,12 @@ float rateFromTimeConstant(float dt, float tau) {
 
 float decayFromTimeConstant(float dt, float tau) { return tau > 0.0f ? std::exp(-dt / tau) : 0.0f; }
 
+std::uint32_t stepsWithinTimeConstant(float dt, float tau) {
+    const double steps = static_cast<double>(tau) / static_cast<double>(dt);
+    if (!(steps < 4e9)) return UINT32_MAX;  // no discount to speak of (or dt underflowing)
+    return std::max<std::uint32_t>(1, static_cast<std::uint32_t>(std::lround(steps)));
+}
+
 }  // namespace
 
 core::WeightLayout weightLayoutFor(const AgentDescriptor& desc) {
@@ -60,6 +66,7 @@ StepConstants Agent::Impl::constantsFor(float dt) const {
     const float bonus = desc.planning && desc.curiosity != CuriosityMode::None ? desc.curiosityFactor : 0.0f;
     const float bonusLow = desc.curiosity == CuriosityMode::Progress ? -bonus : 0.0f;
     k.values = core::valueBounds(brain->rewards, bonusLow, bonus, k.gamma);
+    k.horizon = stepsWithinTimeConstant(dt, desc.tauDiscount);
     return k;
 }
 
@@ -91,11 +98,12 @@ void Agent::Impl::plan(const StepConstants& k) {
     p.values = k.values;
     p.rewards = brain->rewards;
     const bool curious = desc.curiosity != CuriosityMode::None;
-    // Overlapping RBFs and no curiosity: plans teach only if they end, and the actor only at the
-    // real state. Discrete features and no curiosity: a first imagined step that stays at the real
+    // Overlapping RBFs and no curiosity: plans teach only if they end within the discount horizon,
+    // and the actor only at the real state. Discrete features and no curiosity: a first imagined step that stays at the real
     // state is not replayed (planner.hpp).
     p.onlyPlansThatEnd = !desc.continuousSensors.empty() && !curious;
     p.actorLearnsAtStartOnly = p.onlyPlansThatEnd;
+    if (p.onlyPlansThatEnd) p.maxSteps = std::min(p.maxSteps, k.horizon);
     p.replaysNoStayAtStart = desc.continuousSensors.empty() && !curious;
     p.predictsChange = brain->modelPredictsChange;
     const core::PlanResult result = planner.run(p, current, normalized.data(), weights, rep, model, rng);

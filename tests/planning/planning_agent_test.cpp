@@ -109,6 +109,45 @@ TEST(PlanningAgent, ContinuousPlansTeachOnlyWhenTheyReachTheEnd) {
     EXPECT_GT(curiousPlanned, 0u);
 }
 
+// Such plans look one discount time constant ahead: tau_discount / dt imagined steps, whatever the
+// cap (rollouts that reach the end from further away are the policy's lucky ones; docs/planning.md).
+// A 12-cell corridor learned with plans of up to 50 steps: at tau_discount 0.3 s and dt 0.1 s no plan
+// is longer than 3 steps; at 10 s plans grow longer than that once the end is known.
+TEST(PlanningAgent, ContinuousPlansLookOneDiscountTimeConstantAhead) {
+    for (const float tau : {0.3f, 10.0f}) {
+        auto env = std::make_unique<Corridor>(12);
+        env->settings().planning = true;
+        env->settings().tauModel = 0.0f;
+        env->settings().maxPlanningSteps = 50;
+        env->settings().tauDiscount = tau;
+        AgentDescriptor d = env->agentDescriptor();
+        d.seed = 5;
+        Agent agent(d);
+        Observation obs(d);
+        std::uint32_t longest = 0;
+        for (std::uint64_t trial = 0; trial < 30; ++trial) {
+            env->beginTrial(trial);
+            float reward = 0.0f;
+            for (std::uint32_t step = 0; step < env->maxStepsPerTrial(); ++step) {
+                env->observe(obs);
+                const std::uint32_t a = agent.update(reward, obs, 0.1f);
+                longest = std::max(longest, agent.stats().planningSteps);
+                const StepResult r = env->act(a);
+                if (r.terminal) {
+                    agent.endEpisode(r.reward);
+                    break;
+                }
+                reward = r.reward;
+            }
+        }
+        if (tau < 1.0f) {
+            EXPECT_EQ(longest, 3u);  // reached, never passed
+        } else {
+            EXPECT_GT(longest, 3u);
+        }
+    }
+}
+
 // Such plans teach the actor only at the real state they start from, the critic all along (imagined
 // actor updates leaked through overlapping RBFs into dead ends: docs/planning.md). Real steps learn
 // nothing here, so every weight change of an update is its plan's.

@@ -25,9 +25,9 @@ struct AgainstRl {
     double planned = 0.0, plain = 0.0, plannedReached = 0.0, plainReached = 0.0, worstPlannedReached = 1.0;
 };
 AgainstRl planningAgainstRl(const char* task, std::uint32_t runs, std::uint32_t trials,
-                            const std::vector<std::uint64_t>& seeds, std::size_t first, std::size_t last) {
+                            const std::vector<std::uint64_t>& seeds, std::size_t first, std::size_t last,
+                            const DescriptorOverride& plan = [](AgentDescriptor& d) { d.planning = true; }) {
     const TaskInfo* info = findTask(task);
-    auto plan = [](AgentDescriptor& d) { d.planning = true; };
     const double n = static_cast<double>(seeds.size());
     AgainstRl a;
     for (std::uint64_t seed : seeds) {
@@ -86,8 +86,8 @@ void planContinuously(AgentDescriptor& d) {
 
 // The original's continuous planning runs all hit the 10,000-step cap; before plans had to reach the
 // end of the trial to teach (docs/planning.md), ours reached the goal in 90% of late trials (1035
-// steps). Now every late trial of every run does (10 runs, seed 1: 437.4 steps over trials 41-50; 452
-// before the model predicted changes).
+// steps). Now every late trial of every run does (10 runs, seed 1: 423.7 steps over trials 41-50; 452
+// before the model predicted changes, 453.2 before plans looked one discount time constant ahead).
 TEST(PlanningLearning, PlanningWorksWithContinuousSensors) {
     const LearningCurve c = maze2("maze2-continuous", 10, planContinuously);
     const double late = windowMean(c.steps, 41, 51);
@@ -192,14 +192,17 @@ TEST(PlanningLearning, PlanningNoWorseThanRlOnTheBandit) {
     EXPECT_GE(plannedBest, plainBest - 0.024);
 }
 
-// Known gap (the KnownGap convention: tests/learning/hot_plate_learning_test.cpp; docs/planning.md):
-// with long plans (<= 50 steps, threshold 0.1) planning on continuous maze #2 is still slower than
-// RL alone: this test (seed 1, 10 runs) 453.2 against 437.0 steps on trials 41-50 (437.4 before
-// plans taught the actor only where they start); seeds 101, ..., 1010, 10 runs each: 540.6 against
-// 505.5. The default plans (<= 10 steps) are gated above.
-TEST(KnownGapPlanningLearning, ContinuousPlanningNoSlowerThanRl) {
-    const double planned = windowMean(maze2("maze2-continuous", 10, planContinuously).steps, 41, 51);
-    const double plain = windowMean(maze2("maze2-continuous", 10).steps, 41, 51);
-    std::printf("continuous maze2 trials 41-50: planning %.1f, no planning %.1f steps\n", planned, plain);
-    EXPECT_LE(planned, plain);
+// Long plans (<= 50 steps, threshold 0.1, the original's maze #2 settings) on continuous maze #2, seeds
+// 101, 202, ..., 1010, 10 runs each, trials 41-50: 498.6 steps against 505.5 for RL alone (seed 1:
+// 423.7 against 437.0). Before such plans looked only one discount time constant ahead (10 steps
+// here) they took 540.6 (seed 1: 453.2): from far away, the rollouts that reach the goal are the
+// policy's rare lucky ones (0.2-15% of dry runs from the maze's left seven columns), and teaching only
+// those taught values the policy does not earn (docs/planning.md). A known gap until then.
+TEST(PlanningLearning, LongContinuousPlansNoSlowerThanRlOnMaze2) {
+    const AgainstRl a = planningAgainstRl("maze2-continuous", 10, 51,
+                                          {101, 202, 303, 404, 505, 606, 707, 808, 909, 1010}, 41, 51, planContinuously);
+    std::printf("continuous maze2, plans <= 50, trials 41-50 over 10 seeds: planning %.1f, no planning %.1f steps; "
+                "at the goal %.3f and %.3f\n", a.planned, a.plain, a.plannedReached, a.plainReached);
+    EXPECT_LE(a.planned, a.plain);
+    EXPECT_GE(a.plannedReached, a.plainReached);
 }

@@ -56,7 +56,7 @@ int main(int argc, char** argv) {
     std::printf("%s runs=%u trials=%zu first10=%.1f", info->name.c_str(), runs, n, tasks::windowMean(curve, 0, 10));
     if (n > 50) std::printf(" 41-50=%.1f", tasks::windowMean(curve, 41, 51));
     if (n > 61) std::printf(" 61-80=%.1f", tasks::windowMean(curve, 61, 81));
-    std::printf(" last10=%.1f success(last10)=%.2f\n", tasks::windowMean(curve, n - 10, n),
+    std::printf(" last10=%.3f success(last10)=%.3f\n", tasks::windowMean(curve, n - 10, n),
                 tasks::windowMean(c.success, n - 10, n));
     return 0;
 }
