@@ -13,6 +13,28 @@ using namespace verve::tasks;
 
 namespace {
 
+// The longest plan over `trials` trials of `env`, each begun with seed `sameStart ? 0 : trial`.
+std::uint32_t longestPlan(Agent& agent, Environment& env, std::uint64_t trials, bool sameStart) {
+    Observation obs(agent.descriptor());
+    std::uint32_t longest = 0;
+    for (std::uint64_t t = 0; t < trials; ++t) {
+        env.beginTrial(sameStart ? 0 : t);
+        float reward = 0.0f;
+        for (std::uint32_t i = 0; i < env.maxStepsPerTrial(); ++i) {
+            env.observe(obs);
+            const std::uint32_t action = agent.update(reward, obs, 0.1f);
+            longest = std::max(longest, agent.stats().planningSteps);
+            const StepResult step = env.act(action);
+            if (step.terminal) {
+                agent.endEpisode(step.reward);
+                break;
+            }
+            reward = step.reward;
+        }
+    }
+    return longest;
+}
+
 AgentDescriptor mazeAgent(std::uint32_t cap) {
     AgentDescriptor d = findTask("maze2-planning")->make(1)->agentDescriptor();
     d.maxPlanningSteps = cap;
@@ -24,23 +46,7 @@ AgentDescriptor mazeAgent(std::uint32_t cap) {
 TEST(PlanningAgent, FillsStatisticsAndRespectsTheCap) {
     auto env = findTask("maze2-planning")->make(1);
     Agent agent(mazeAgent(7));
-    std::uint32_t most = 0;
-    Observation obs(agent.descriptor());
-    for (int t = 0; t < 20; ++t) {
-        env->beginTrial(0);
-        float reward = 0.0f;
-        for (int i = 0; i < 2000; ++i) {
-            env->observe(obs);
-            const auto action = agent.update(reward, obs, 0.1f);
-            most = std::max(most, agent.stats().planningSteps);
-            const StepResult step = env->act(action);
-            if (step.terminal) {
-                agent.endEpisode(step.reward);
-                break;
-            }
-            reward = step.reward;
-        }
-    }
+    const std::uint32_t most = longestPlan(agent, *env, 20, true);
     EXPECT_EQ(most, 7u);  // plans reach the cap once the maze is known, and never exceed it
     EXPECT_GE(agent.stats().modelError, 0.0f);
     EXPECT_FLOAT_EQ(agent.stats().curiosityReward, 0.0f);  // no curiosity configured
@@ -123,23 +129,7 @@ TEST(PlanningAgent, ContinuousPlansLookOneDiscountTimeConstantAhead) {
         AgentDescriptor d = env->agentDescriptor();
         d.seed = 5;
         Agent agent(d);
-        Observation obs(d);
-        std::uint32_t longest = 0;
-        for (std::uint64_t trial = 0; trial < 30; ++trial) {
-            env->beginTrial(trial);
-            float reward = 0.0f;
-            for (std::uint32_t step = 0; step < env->maxStepsPerTrial(); ++step) {
-                env->observe(obs);
-                const std::uint32_t a = agent.update(reward, obs, 0.1f);
-                longest = std::max(longest, agent.stats().planningSteps);
-                const StepResult r = env->act(a);
-                if (r.terminal) {
-                    agent.endEpisode(r.reward);
-                    break;
-                }
-                reward = r.reward;
-            }
-        }
+        const std::uint32_t longest = longestPlan(agent, *env, 30, false);
         if (tau < 1.0f) {
             EXPECT_EQ(longest, 3u);  // reached, never passed
         } else {
