@@ -103,6 +103,9 @@ private:
     void rebuildBlockBounds(Cell& c) const;
     std::uint64_t discreteKey(const std::int32_t* discrete) const;
     void cellCoords(const float* point, std::int32_t* coords) const;
+    // Fills candidates_ (up to 3 distinct cell coordinates per dimension around the point) and
+    // resets the odometer offsets_; returns the number of neighbour cells.
+    std::size_t neighbourCandidates(const float* point) const;
     std::uint64_t cellHash(const std::int32_t* coords) const;
     void allocateFullLattice();
 
@@ -122,13 +125,6 @@ private:
     std::unordered_map<std::uint64_t, Array> arrays_;
     std::uint32_t featureCount_ = 0;
 
-    // Scratch for neighbour enumeration (no allocation once warmed up). Mutable: lookups are
-    // logically const, and one agent is used by one thread at a time.
-    mutable std::vector<std::int32_t> coords_, neighbour_, offsets_;
-    mutable std::vector<std::int32_t> candidates_;  // per dimension up to 3 distinct cell coordinates
-    mutable std::vector<std::uint8_t> candidateCount_;
-    mutable std::vector<std::uint64_t> visited_;  // cell hashes already read this activation
-
     // Whether block boxes pay, measured on the lookups themselves. Reading a block's box costs
     // 2 floats per dimension, reading the block (dims + 1) * kScanLanes: the boxes save bytes only
     // when they skip more than dims / (4 (dims + 1)) of the blocks tested (a fifth in 4-D), and
@@ -141,6 +137,14 @@ private:
     static constexpr std::uint32_t kWholeLookups = 128;   // lookups read whole after a verdict
     mutable std::uint32_t blocksTested_ = 0, blocksKept_ = 0;
     mutable std::uint32_t wholeLookupsLeft_ = 0;
+
+    // Scratch for neighbour enumeration (no allocation once warmed up). Mutable: lookups are
+    // logically const, and one agent is used by one thread at a time. Last: a lookup in an array
+    // of one cell reads none of it, and the members above then share fewer cache lines.
+    mutable std::vector<std::int32_t> coords_, neighbour_, offsets_;
+    mutable std::vector<std::int32_t> candidates_;  // per dimension up to 3 distinct cell coordinates
+    mutable std::vector<std::uint8_t> candidateCount_;
+    mutable std::vector<std::uint64_t> visited_;  // cell hashes already read this activation
 };
 
 }  // namespace verve::core
