@@ -36,8 +36,8 @@ Agent::Impl::Impl(std::shared_ptr<BrainState> shared, std::uint64_t seed)
       desc(brain->desc),
       rep(brain->rep),
       weights(brain->weights),
-      td(desc.numActions, desc.traceThreshold),
       rng(seed),
+      td(desc.numActions, desc.traceThreshold),
       model(desc),
       planner(desc) {
     previousDiscrete.assign(desc.discreteSensors.size(), 0);
@@ -173,7 +173,7 @@ std::uint32_t Agent::update(float reward, ObservationView obs, float dt, ActionM
     Impl& s = *impl_;
     // Everything is checked before anything changes.
     if (mask.allowed != nullptr || mask.count != 0) core::checkActionMask(s.desc, mask.allowed, mask.count);
-    core::checkObservation(s.desc, obs, s.normalized);
+    core::checkObservation(s.desc, s.rep.circular(), obs, s.normalized);
     core::checkFinite(reward, "reward");
     core::checkTimeStep(dt);
 

@@ -60,7 +60,6 @@ struct Agent::Impl {
     core::WeightTable& weights;
     // Other bodies change the shared weights between two updates of this one.
     bool sharesBrain = false;
-    core::TdLearner td;
     core::Rng rng;
     bool learning = true;
     ActionSelection selection = ActionSelection::Sample;
@@ -86,6 +85,7 @@ struct Agent::Impl {
     // Scratch reused on every update (no allocation once warmed up).
     std::vector<core::ActiveFeature> current;
     std::vector<float> normalized;  // swaps buffers with previousContinuous after each update
+    core::TdLearner td;  // its tail is cold: next to the planning state
 
     // Planning only (desc.planning): last, so that the fields above, which every update reads,
     // share as few cache lines as they can (a crowd's update misses each line it touches).

@@ -160,7 +160,7 @@ void Batch::update(const BatchStep& s) {
                        " lie outside the continuous array (" + std::to_string(s.continuousTotal) + " values)");
             }
             b.views[i] = ObservationView{nd > 0 ? s.discrete + d : nullptr, nd, nc > 0 ? s.continuous + c : nullptr, nc};
-            core::checkObservation(a.desc, b.views[i], b.normalized);
+            core::checkObservation(a.desc, a.rep.circular(), b.views[i], b.normalized);
             core::checkFinite(s.rewards[i], "reward");
             BrainState& brain = *a.brain;
             if (brain.batchToken != token) {

@@ -33,18 +33,14 @@ StateRepresentation::StateRepresentation(const AgentDescriptor& desc)
       keyCount_(1),
       activationSum_(1.0f),
       kernels_(&kernels()) {
-    for (const auto& s : desc.continuousSensors) circular_.push_back(s.circular ? 1 : 0);
+    if (numContinuous_ > kMaxDims) throw Error(ErrorCode::InvalidArgument, "too many continuous sensors");
+    for (std::uint32_t d = 0; d < numContinuous_; ++d) circular_[d] = desc.continuousSensors[d].circular ? 1 : 0;
     for (auto c : discreteCounts_) keyCount_ *= c;
     for (std::uint32_t d = 0; d < numContinuous_ && maxNeighbours_ < (1ULL << 40); ++d) maxNeighbours_ *= 3;
     double cells = 1.0;
     for (std::uint32_t d = 0; d < numContinuous_; ++d) cells *= cellsPerDim_;
     exactCellKeys_ = cells < 0x1p63;
     activationSum_ = std::pow(2.5f, static_cast<float>(numContinuous_));
-    coords_.resize(numContinuous_);
-    neighbour_.resize(numContinuous_);
-    offsets_.resize(numContinuous_);
-    candidates_.resize(std::size_t(numContinuous_) * 3);
-    candidateCount_.resize(numContinuous_);
     if (desc.allocation == RbfAllocation::Full) allocateFullLattice();
 }
 
@@ -268,12 +264,12 @@ float StateRepresentation::farthestDistance2(const float* bounds, const float* p
     return sum;
 }
 
-bool StateRepresentation::scanCell(const Cell& c, const ScanParams& params, bool boxes,
+bool StateRepresentation::scanCell(const Cell& c, const ScanParams& params, bool boxes, bool alone,
                                    std::vector<ActiveFeature>& out) const {
     // The margin keeps an RBF whose distance rounds differently in the scan (a box distance is
     // never more than any of its centres' distances).
     const float reach = params.cutoff2 * 1.0001f;
-    if (boxDistance2(c.bounds.data(), params.point) > reach) return false;
+    if (!alone && boxDistance2(c.bounds.data(), params.point) > reach) return false;
     const std::size_t n = out.size();
     const std::size_t count = c.features.size();
     const std::uint32_t* features = c.consecutive ? nullptr : c.features.data();
@@ -370,7 +366,7 @@ bool StateRepresentation::find(const std::int32_t* discrete, const float* contin
     if (cells.size() <= neighbours) {
         // A coarse grid (low resolution, many sensors): the array has no more cells than the
         // neighbourhood, so reading them all costs no more and needs no hashing.
-        for (const auto& entry : cells) nearOne |= scanCell(entry.second, params, boxes, out);
+        for (const auto& entry : cells) nearOne |= scanCell(entry.second, params, boxes, cells.size() == 1, out);
     } else {
         visited_.clear();
         while (true) {
@@ -380,7 +376,7 @@ bool StateRepresentation::find(const std::int32_t* discrete, const float* contin
             // Two neighbour cells whose hashes collide share one list: visit it once.
             if (cell != cells.end() && (exactCellKeys_ || std::find(visited_.begin(), visited_.end(), hash) == visited_.end())) {
                 if (!exactCellKeys_) visited_.push_back(hash);
-                nearOne |= scanCell(cell->second, params, boxes, out);
+                nearOne |= scanCell(cell->second, params, boxes, false, out);
             }
             std::uint32_t d = 0;
             for (; d < numContinuous_; ++d) {  // odometer over the neighbour cells

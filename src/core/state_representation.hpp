@@ -7,6 +7,7 @@
 // it, never all RBFs ever made.
 #pragma once
 #include <algorithm>
+#include <array>
 #include <cstdint>
 #include <unordered_map>
 #include <vector>
@@ -33,13 +34,16 @@ public:
     // Room for lookups once there are `features` RBFs: find() then allocates nothing, given an
     // output vector with foundCapacity(features) room (the scan writes whole lanes, then trims).
     // A lookup visits at most 3^n cells, each once, and never more cells than RBFs.
-    void reserve(std::uint32_t features) { reserveRoom(visited_, std::min<std::uint64_t>(features, maxNeighbours_)); }
+    void reserve(std::uint32_t features) {
+        if (!exactCellKeys_) reserveRoom(visited_, std::min<std::uint64_t>(features, maxNeighbours_));  // only hashed keys use it
+    }
     static std::size_t foundCapacity(std::uint32_t features) { return std::size_t(features) + kScanLanes; }
     // The same without allocating; returns whether some RBF lies within one width.
     bool find(const std::int32_t* discrete, const float* continuous, std::vector<ActiveFeature>& out) const;
 
     std::uint32_t featureCount() const { return featureCount_; }
     std::uint32_t numContinuous() const { return numContinuous_; }
+    const std::uint8_t* circular() const { return circular_.data(); }  // per continuous sensor: 1 when it wraps
     std::uint64_t keyCount() const { return keyCount_; }
     // Whether the next lookup reads cells whole rather than through their block boxes (judgeBoxes).
     bool readsCellsWhole() const { return wholeLookupsLeft_ > 0; }
@@ -81,8 +85,10 @@ private:
     };
 
     // Appends the RBFs of one cell within the cutoff; returns whether one lies within a width.
-    // Without `boxes`, a cell is read whole, never through its block boxes (same result).
-    bool scanCell(const Cell& c, const ScanParams& params, bool boxes, std::vector<ActiveFeature>& out) const;
+    // Without `boxes`, a cell is read whole, never through its block boxes (same result). An array's
+    // only cell (`alone`) skips the test of its own box: it holds every RBF the agent made along
+    // its way, so the test nearly always passes, and its bounds would be one more cache miss.
+    bool scanCell(const Cell& c, const ScanParams& params, bool boxes, bool alone, std::vector<ActiveFeature>& out) const;
     // After a lookup that tested block boxes: once enough blocks were tested, and nearly all of
     // them passed, the next kWholeLookups lookups read their cells whole (the counters below).
     void judgeBoxes() const;
@@ -110,7 +116,10 @@ private:
     void allocateFullLattice();
 
     std::vector<std::uint32_t> discreteCounts_;
-    std::vector<std::uint8_t> circular_;
+    // Per continuous sensor, 1 when -1 and 1 meet. Inline (kMaxSensors), like the neighbour
+    // scratch below: small blocks of their own would each be a cache miss of a crowd's update.
+    static constexpr std::uint32_t kMaxDims = DescriptorLimits::kMaxSensors;
+    std::array<std::uint8_t, kMaxDims> circular_{};
     std::uint32_t numContinuous_;
     std::uint32_t resolution_;
     float sigma_;
@@ -141,9 +150,9 @@ private:
     // Scratch for neighbour enumeration (no allocation once warmed up). Mutable: lookups are
     // logically const, and one agent is used by one thread at a time. Last: a lookup in an array
     // of one cell reads none of it, and the members above then share fewer cache lines.
-    mutable std::vector<std::int32_t> coords_, neighbour_, offsets_;
-    mutable std::vector<std::int32_t> candidates_;  // per dimension up to 3 distinct cell coordinates
-    mutable std::vector<std::uint8_t> candidateCount_;
+    mutable std::array<std::int32_t, kMaxDims> coords_{}, neighbour_{}, offsets_{};
+    mutable std::array<std::int32_t, 3 * kMaxDims> candidates_{};  // per dimension up to 3 distinct cell coordinates
+    mutable std::array<std::uint8_t, kMaxDims> candidateCount_{};
     mutable std::vector<std::uint64_t> visited_;  // cell hashes already read this activation
 };
 
