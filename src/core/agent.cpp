@@ -173,9 +173,10 @@ std::uint32_t Agent::update(float reward, ObservationView obs, float dt, ActionM
     Impl& s = *impl_;
     // Everything is checked before anything changes.
     if (mask.allowed != nullptr || mask.count != 0) core::checkActionMask(s.desc, mask.allowed, mask.count);
-    core::checkObservation(s.desc, s.rep.circular(), obs, s.normalized);
+    core::checkObservation(s.desc, obs);
     core::checkFinite(reward, "reward");
     core::checkTimeStep(dt);
+    core::normalizeObservation(s.rep.circular(), obs, s.normalized);
 
     // Everything that may allocate, before anything changes (strong guarantee): the lookup, then
     // room for one more RBF everywhere, then the RBF itself (strong on its own).
