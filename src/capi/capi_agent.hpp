@@ -24,13 +24,16 @@ struct verve_agent {
         return agent_;
     }
     // A brain's body counts its changes with the brain (and so with every other body).
-    void shareChangesWith(verve::capi::ChangeCounter brainChanges) { changes_ = std::move(brainChanges); }
+    void shareChangesWith(verve::capi::ChangeCounter brainChanges) {
+        brainChanges_ = std::move(brainChanges);
+        changes_ = brainChanges_.get();
+    }
 
     // verve_agent_save_memory's (and _binary's) two calls serialise once: the size query keeps its
     // bytes for the call with a buffer, unless the agent (or, for a body, its brain) changed between.
     template <typename Serialise>
     void saveToBuffer(verve::SaveFormat format, Serialise&& serialise, void* buffer, std::size_t& size) const {
-        save_.serve(format, changes_, std::forward<Serialise>(serialise), buffer, size);
+        save_.serve(format, *changes_, std::forward<Serialise>(serialise), buffer, size);
     }
 
     // Set for the duration of every call on this agent. Mutable: read-only calls take it too,
@@ -42,7 +45,11 @@ struct verve_agent {
 
 private:
     verve::Agent agent_;
-    verve::capi::ChangeCounter changes_ = verve::capi::newChangeCounter();
+    // An agent of its own counts in the handle: a block of its own would be one more cache miss
+    // per update of a crowd's agent. A body counts with its brain (shareChangesWith).
+    std::atomic<std::uint64_t> ownChanges_{0};
+    std::atomic<std::uint64_t>* changes_ = &ownChanges_;
+    verve::capi::ChangeCounter brainChanges_;  // a body's: keeps its brain's counter alive
     // Mutable: a save is a const call (one agent is used by one thread at a time).
     mutable verve::capi::KeptSave save_;
 };

@@ -41,8 +41,9 @@ class KeptSave {
 public:
     // copyOut of the save that serialise() makes (a std::string), run only when nothing current is kept.
     template <typename Serialise>
-    void serve(SaveFormat format, const ChangeCounter& changes, Serialise&& serialise, void* buffer, std::size_t& size) {
-        const std::uint64_t now = changes->load(std::memory_order_relaxed);
+    void serve(SaveFormat format, const std::atomic<std::uint64_t>& changes, Serialise&& serialise, void* buffer,
+               std::size_t& size) {
+        const std::uint64_t now = changes.load(std::memory_order_relaxed);
         if (!kept_ || format_ != format || at_ != now) {
             bytes_ = std::forward<Serialise>(serialise)();
             kept_ = true;

@@ -55,7 +55,7 @@ void saveToFile(const verve_brain* brain, const char* path, verve::SaveFormat fo
 void saveToMemory(const verve_brain* brain, void* buffer, size_t* size, verve::SaveFormat format) {
     const BrainUse use(brain);
     requireArg(size, "size");
-    brain->save.serve(format, brain->changes, [&] { return verve::saveBrainToString(brain->brain, format); }, buffer, *size);
+    brain->save.serve(format, *brain->changes, [&] { return verve::saveBrainToString(brain->brain, format); }, buffer, *size);
 }
 
 }  // namespace

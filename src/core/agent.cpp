@@ -31,7 +31,7 @@ core::WeightLayout weightLayoutFor(const AgentDescriptor& desc) {
 }
 
 BrainState::BrainState(const AgentDescriptor& d)
-    : desc((d.validate(), d)), rep(desc), weights(weightLayoutFor(desc)) {
+    : desc((d.validate(), d)), weights(weightLayoutFor(desc)), rep(desc) {
     weights.resize(rep.featureCount());
 }
 
@@ -42,16 +42,16 @@ Agent::Impl::Impl(std::shared_ptr<BrainState> shared, std::uint64_t seed)
       desc(brain->desc),
       rep(brain->rep),
       weights(brain->weights),
-      td(desc.numActions, desc.traceThreshold),
       rng(seed),
+      td(desc.numActions, desc.traceThreshold),
       model(desc),
       planner(desc) {
     previousDiscrete.assign(desc.discreteSensors.size(), 0);
     previousContinuous.assign(desc.continuousSensors.size(), 0.0f);
     normalized.reserve(desc.continuousSensors.size());
-    activations.reserve(td.traceStride());  // chooseAction's scratch: one per trace component
-    stats.rbfCount = rep.featureCount();
+    probabilities.reserve(td.traceStride());  // chooseAction's scratch: one per trace component
     probabilities.assign(desc.numActions, 1.0f / static_cast<float>(desc.numActions));
+    stats.rbfCount = rep.featureCount();
 }
 
 StepConstants Agent::Impl::constantsFor(float dt) const {
@@ -113,9 +113,9 @@ void Agent::Impl::plan(const StepConstants& k) {
 
 void Agent::Impl::recordProbabilities(const std::uint8_t* allowed) {
     float total = 0.0f;
-    for (float y : activations) total += y;
+    for (float y : probabilities) total += y;
     if (total > 0.0f && std::isfinite(total)) {
-        for (std::size_t a = 0; a < activations.size(); ++a) probabilities[a] = activations[a] / total;
+        for (float& p : probabilities) p /= total;
         return;
     }
     // Every activation underflowed: the choice was uniform among the allowed actions.
@@ -133,6 +133,7 @@ void Agent::Impl::reserveFor(std::uint32_t features, std::size_t active) {
     rep.reserve(features);
     weights.reserve(features);
     core::reserveRoom(current, active);
+    core::reserveRoom(probabilities, td.traceStride());  // a restore may have left it numActions
     td.reserve(features, active);
     if (desc.planning) planner.reserve(features);
 }
@@ -180,9 +181,10 @@ std::uint32_t Agent::update(float reward, ObservationView obs, float dt, ActionM
     Impl& s = *impl_;
     // Everything is checked before anything changes.
     if (mask.allowed != nullptr || mask.count != 0) core::checkActionMask(s.desc, mask.allowed, mask.count);
-    core::checkObservation(s.desc, obs, s.normalized);
+    core::checkObservation(s.desc, obs);
     core::checkFinite(reward, "reward");
     core::checkTimeStep(dt);
+    core::normalizeObservation(s.rep.circular(), obs, s.normalized);
 
     // Everything that may allocate, before anything changes (strong guarantee): the lookup, then
     // room for one more RBF everywhere, then the RBF itself (strong on its own).
@@ -218,7 +220,7 @@ std::uint32_t Agent::update(float reward, ObservationView obs, float dt, ActionM
     // Plan from the state just reached, before acting, so the action already uses what it taught.
     if (plans) s.plan(k);
 
-    const std::uint32_t action = s.td.chooseAction(s.weights, s.current, s.rng, s.activations, s.latestValue,
+    const std::uint32_t action = s.td.chooseAction(s.weights, s.current, s.rng, s.probabilities, s.latestValue,
                                                    mask.allowed, s.selection == ActionSelection::Greedy);
     s.stats.value = core::bounded(s.latestValue, k.values);
     s.recordProbabilities(mask.allowed);
@@ -227,7 +229,7 @@ std::uint32_t Agent::update(float reward, ObservationView obs, float dt, ActionM
     std::swap(s.previous, s.current);
     s.previousAction = action;
     s.previousDiscrete.assign(obs.discrete, obs.discrete + obs.numDiscrete);
-    s.previousContinuous = s.normalized;
+    std::swap(s.previousContinuous, s.normalized);  // both hold numContinuous values: no copy
     s.hasPrevious = true;
 
     ++s.stats.steps;

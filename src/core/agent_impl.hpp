@@ -48,7 +48,8 @@ struct Agent::Impl {
     float learnedReward(float reward);
     // An update that needed an RBF the budget did not allow: counted and reported (once).
     void noteBudgetReached();
-    // probabilities = activations / their sum (uniform over the allowed actions if all underflowed).
+    // probabilities: chooseAction's activations, divided by their sum (uniform over the allowed
+    // actions if all underflowed).
     void recordProbabilities(const std::uint8_t* allowed);
     static constexpr float kModelErrorAveraging = 0.05f;  // stats.modelError: ~20-step running mean
     bool learnsFromRealSteps() const { return !desc.planning || desc.learnFromRealSteps; }
@@ -60,13 +61,12 @@ struct Agent::Impl {
     core::WeightTable& weights;
     // Other bodies change the shared weights between two updates of this one.
     bool sharesBrain = false;
-    core::TdLearner td;
     core::Rng rng;
-    core::PredictiveModel model;
-    core::Planner planner;
     bool learning = true;
     ActionSelection selection = ActionSelection::Sample;
-    std::vector<float> probabilities;  // of the latest update's choice
+    // Of the latest update's choice; chooseAction's scratch before that (capacity 1 + numActions),
+    // so that an update writes one small block where it wrote two.
+    std::vector<float> probabilities;
 
     // Short-term memory: the previous step.
     bool hasPrevious = false;
@@ -85,8 +85,13 @@ struct Agent::Impl {
 
     // Scratch reused on every update (no allocation once warmed up).
     std::vector<core::ActiveFeature> current;
-    std::vector<float> normalized;
-    std::vector<float> activations;
+    std::vector<float> normalized;  // swaps buffers with previousContinuous after each update
+    core::TdLearner td;  // its tail is cold: next to the planning state
+
+    // Planning only (desc.planning): last, so that the fields above, which every update reads,
+    // share as few cache lines as they can (a crowd's update misses each line it touches).
+    core::PredictiveModel model;
+    core::Planner planner;
 };
 
 core::WeightLayout weightLayoutFor(const AgentDescriptor& desc);

@@ -61,7 +61,6 @@ struct Batch::Impl {
     std::vector<std::uint32_t> groupStart;  // per group: first entry in `order`, plus an end
     std::vector<std::uint32_t> order;       // agent indices grouped, each group in array order
     std::vector<ObservationView> views;    // per agent, into the packed arrays
-    std::vector<float> normalized;
     FirstFailure failure;
 };
 
@@ -160,7 +159,7 @@ void Batch::update(const BatchStep& s) {
                        " lie outside the continuous array (" + std::to_string(s.continuousTotal) + " values)");
             }
             b.views[i] = ObservationView{nd > 0 ? s.discrete + d : nullptr, nd, nc > 0 ? s.continuous + c : nullptr, nc};
-            core::checkObservation(a.desc, b.views[i], b.normalized);
+            core::checkObservation(a.desc, b.views[i]);
             core::checkFinite(s.rewards[i], "reward");
             BrainState& brain = *a.brain;
             if (brain.batchToken != token) {

@@ -13,19 +13,22 @@ namespace verve {
 struct BrainState {
     explicit BrainState(const AgentDescriptor& d);
 
+    // What every update reads comes first, the representation (whose tail is cold) last, so that
+    // an update of a crowd's agent touches as few of this struct's cache lines as it can. A batch
+    // reads every agent's brain once before it updates any: the scratch it writes comes right
+    // before the descriptor's sensor lists, which its check reads.
+    // Scratch of a batch update (batch.cpp): which group of the current call this brain is in.
+    std::uint64_t batchToken = 0;
+    std::uint32_t batchGroup = 0;
     AgentDescriptor desc;
-    core::StateRepresentation rep;
     core::WeightTable weights;
-    std::uint64_t bodiesMade = 0;  // numbers each new body's random stream
     // The real rewards every body has learned from: they bound the values TD errors bootstrap from.
     core::RewardRange rewards;
     // Whether the model's continuous outputs are changes (core/predictive_model.hpp): true for every
     // brain made now, false for one loaded from a save that predates them, which keeps its meaning.
     bool modelPredictsChange = true;
-
-    // Scratch of a batch update (batch.cpp): which group of the current call this brain is in.
-    std::uint64_t batchToken = 0;
-    std::uint32_t batchGroup = 0;
+    std::uint64_t bodiesMade = 0;  // numbers each new body's random stream
+    core::StateRepresentation rep;
 };
 
 }  // namespace verve

@@ -35,7 +35,7 @@ void checkActionMask(const AgentDescriptor& desc, const std::uint8_t* allowed, s
     if (!any) refuse("the action mask allows no action (at least one flag must be 1)");
 }
 
-void checkObservation(const AgentDescriptor& desc, ObservationView obs, std::vector<float>& normalized) {
+void checkObservation(const AgentDescriptor& desc, ObservationView obs) {
     const auto nd = desc.discreteSensors.size();
     const auto nc = desc.continuousSensors.size();
     if (obs.numDiscrete != nd) {
@@ -56,11 +56,17 @@ void checkObservation(const AgentDescriptor& desc, ObservationView obs, std::vec
                    std::to_string(desc.discreteSensors[i] - 1));
         }
     }
-    normalized.resize(nc);
     for (std::size_t i = 0; i < nc; ++i) {
-        float v = obs.continuous[i];
+        const float v = obs.continuous[i];
         if (!std::isfinite(v)) refuse("continuous sensor " + std::to_string(i) + " reads " + std::to_string(v) + ", values must be finite");
-        if (desc.continuousSensors[i].circular) {
+    }
+}
+
+void normalizeObservation(const std::uint8_t* circular, ObservationView obs, std::vector<float>& normalized) {
+    normalized.resize(obs.numContinuous);
+    for (std::size_t i = 0; i < obs.numContinuous; ++i) {
+        float v = obs.continuous[i];
+        if (circular[i] != 0) {
             v = std::fmod(v + 1.0f, 2.0f);  // wrap into [-1, 1)
             if (v < 0.0f) v += 2.0f;
             v -= 1.0f;

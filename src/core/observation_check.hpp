@@ -9,9 +9,13 @@
 
 namespace verve::core {
 
-// Throws Error(InvalidArgument) naming the first bad value. On success writes the continuous
-// values clamped to [-1, 1] (wrapped into [-1, 1) when circular) to `normalized`.
-void checkObservation(const AgentDescriptor& desc, ObservationView obs, std::vector<float>& normalized);
+// Throws Error(InvalidArgument) naming the first bad value. Reads the descriptor's sensor counts
+// only: a batch checks every agent before it updates any, one more trip through a crowd's memory.
+void checkObservation(const AgentDescriptor& desc, ObservationView obs);
+// A checked observation's continuous values clamped to [-1, 1] (wrapped into [-1, 1) where
+// circular[i] is 1). `circular` is StateRepresentation::circular(), which an update reads anyway:
+// the descriptor's sensor list would be one more cache miss per update of a crowd's agent.
+void normalizeObservation(const std::uint8_t* circular, ObservationView obs, std::vector<float>& normalized);
 void checkFinite(float value, const char* what);
 void checkTimeStep(float dt);
 // An action mask: numActions flags, each 0 or 1, at least one 1.

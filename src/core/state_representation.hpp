@@ -7,6 +7,7 @@
 // it, never all RBFs ever made.
 #pragma once
 #include <algorithm>
+#include <array>
 #include <cstdint>
 #include <unordered_map>
 #include <vector>
@@ -33,13 +34,16 @@ public:
     // Room for lookups once there are `features` RBFs: find() then allocates nothing, given an
     // output vector with foundCapacity(features) room (the scan writes whole lanes, then trims).
     // A lookup visits at most 3^n cells, each once, and never more cells than RBFs.
-    void reserve(std::uint32_t features) { reserveRoom(visited_, std::min<std::uint64_t>(features, maxNeighbours_)); }
+    void reserve(std::uint32_t features) {
+        if (!exactCellKeys_) reserveRoom(visited_, std::min<std::uint64_t>(features, maxNeighbours_));  // only hashed keys use it
+    }
     static std::size_t foundCapacity(std::uint32_t features) { return std::size_t(features) + kScanLanes; }
     // The same without allocating; returns whether some RBF lies within one width.
     bool find(const std::int32_t* discrete, const float* continuous, std::vector<ActiveFeature>& out) const;
 
     std::uint32_t featureCount() const { return featureCount_; }
     std::uint32_t numContinuous() const { return numContinuous_; }
+    const std::uint8_t* circular() const { return circular_.data(); }  // per continuous sensor: 1 when it wraps
     std::uint64_t keyCount() const { return keyCount_; }
     // Whether the next lookup reads cells whole rather than through their block boxes (judgeBoxes).
     bool readsCellsWhole() const { return wholeLookupsLeft_ > 0; }
@@ -81,8 +85,10 @@ private:
     };
 
     // Appends the RBFs of one cell within the cutoff; returns whether one lies within a width.
-    // Without `boxes`, a cell is read whole, never through its block boxes (same result).
-    bool scanCell(const Cell& c, const ScanParams& params, bool boxes, std::vector<ActiveFeature>& out) const;
+    // Without `boxes`, a cell is read whole, never through its block boxes (same result). An array's
+    // only cell (`alone`) skips the test of its own box: it holds every RBF the agent made along
+    // its way, so the test nearly always passes, and its bounds would be one more cache miss.
+    bool scanCell(const Cell& c, const ScanParams& params, bool boxes, bool alone, std::vector<ActiveFeature>& out) const;
     // After a lookup that tested block boxes: once enough blocks were tested, and nearly all of
     // them passed, the next kWholeLookups lookups read their cells whole (the counters below).
     void judgeBoxes() const;
@@ -103,11 +109,17 @@ private:
     void rebuildBlockBounds(Cell& c) const;
     std::uint64_t discreteKey(const std::int32_t* discrete) const;
     void cellCoords(const float* point, std::int32_t* coords) const;
+    // Fills candidates_ (up to 3 distinct cell coordinates per dimension around the point) and
+    // resets the odometer offsets_; returns the number of neighbour cells.
+    std::size_t neighbourCandidates(const float* point) const;
     std::uint64_t cellHash(const std::int32_t* coords) const;
     void allocateFullLattice();
 
     std::vector<std::uint32_t> discreteCounts_;
-    std::vector<std::uint8_t> circular_;
+    // Per continuous sensor, 1 when -1 and 1 meet. Inline (kMaxSensors), like the neighbour
+    // scratch below: small blocks of their own would each be a cache miss of a crowd's update.
+    static constexpr std::uint32_t kMaxDims = DescriptorLimits::kMaxSensors;
+    std::array<std::uint8_t, kMaxDims> circular_{};
     std::uint32_t numContinuous_;
     std::uint32_t resolution_;
     float sigma_;
@@ -122,13 +134,6 @@ private:
     std::unordered_map<std::uint64_t, Array> arrays_;
     std::uint32_t featureCount_ = 0;
 
-    // Scratch for neighbour enumeration (no allocation once warmed up). Mutable: lookups are
-    // logically const, and one agent is used by one thread at a time.
-    mutable std::vector<std::int32_t> coords_, neighbour_, offsets_;
-    mutable std::vector<std::int32_t> candidates_;  // per dimension up to 3 distinct cell coordinates
-    mutable std::vector<std::uint8_t> candidateCount_;
-    mutable std::vector<std::uint64_t> visited_;  // cell hashes already read this activation
-
     // Whether block boxes pay, measured on the lookups themselves. Reading a block's box costs
     // 2 floats per dimension, reading the block (dims + 1) * kScanLanes: the boxes save bytes only
     // when they skip more than dims / (4 (dims + 1)) of the blocks tested (a fifth in 4-D), and
@@ -141,6 +146,14 @@ private:
     static constexpr std::uint32_t kWholeLookups = 128;   // lookups read whole after a verdict
     mutable std::uint32_t blocksTested_ = 0, blocksKept_ = 0;
     mutable std::uint32_t wholeLookupsLeft_ = 0;
+
+    // Scratch for neighbour enumeration (no allocation once warmed up). Mutable: lookups are
+    // logically const, and one agent is used by one thread at a time. Last: a lookup in an array
+    // of one cell reads none of it, and the members above then share fewer cache lines.
+    mutable std::array<std::int32_t, kMaxDims> coords_{}, neighbour_{}, offsets_{};
+    mutable std::array<std::int32_t, 3 * kMaxDims> candidates_{};  // per dimension up to 3 distinct cell coordinates
+    mutable std::array<std::uint8_t, kMaxDims> candidateCount_{};
+    mutable std::vector<std::uint64_t> visited_;  // cell hashes already read this activation
 };
 
 }  // namespace verve::core

@@ -7,14 +7,13 @@ namespace verve::core {
 
 TdLearner::TdLearner(std::uint32_t numActions, float traceThreshold)
     : numActions_(numActions), stride_(1 + numActions), threshold_(traceThreshold), kernels_(&kernels()) {
-    step_.reserve(stride_);
+    if (stride_ > kStackStride) step_.resize(stride_);
 }
 
 void TdLearner::reserve(std::uint32_t features, std::size_t active) {
     reserveRoom(traces_, std::size_t(features) * stride_);
     // At most `active` more traces become live (and one spare slot, reserveLive()).
     reserveRoom(live_, std::min<std::size_t>(liveCount_ + active, features) + 1);
-    reserveRoom(strong_, active);
 }
 
 float TdLearner::value(const WeightTable& w, const std::vector<ActiveFeature>& phi) const {
@@ -72,14 +71,16 @@ void TdLearner::trainAndDecay(WeightTable& w, float delta, TdRates rates, float 
     const float fastest = std::max(std::fabs(rates.value), std::fabs(rates.policy));
     if (fastest > 0.0f) delta = std::clamp(delta, -kStepLimit / fastest, kStepLimit / fastest);
     // A trace row [value, policy[A]] lines up with the first 1 + A weights of its feature's row.
-    step_.assign(stride_, rates.policy * delta);
-    step_[0] = rates.value * delta;
+    float onStack[kStackStride];
+    float* step = stride_ <= kStackStride ? onStack : step_.data();
+    std::fill_n(step, stride_, rates.policy * delta);
+    step[0] = rates.value * delta;
     // Bounded actor weights: every row trained now is clamped after the kernel has moved it, so
     // remember the rows first (the kernel drops some from the live list as it goes).
     const bool bounded = rates.policyBound > 0.0f;
     if (bounded) trained_.assign(live_.begin(), live_.begin() + liveCount_);
     TraceStep s;
-    s.step = step_.data();
+    s.step = step;
     s.traceStride = stride_;
     s.weightStride = w.stride();
     s.decay = decay;
@@ -107,20 +108,26 @@ void TdLearner::mark(const std::vector<ActiveFeature>& phi, std::uint32_t action
     // Below the threshold a trace would be dropped at the next decay anyway, and in a 4-sigma
     // neighbourhood most features are below it: a sequential, branch-free filter first, so that
     // only the features that mark anything touch the (randomly placed) trace rows.
-    strong_.resize(phi.size());
-    std::size_t n = 0;
-    for (const auto& f : phi) {
-        strong_[n] = f;
-        n += f.activation >= threshold_;
-    }
-    reserveLive(std::min<std::size_t>(n, featureCount - liveCount_));  // at most that many become live
-    for (std::size_t i = 0; i < n; ++i) {
-        const ActiveFeature& f = strong_[i];
-        float* e = trace(f.index);
-        live_[liveCount_] = f.index;
-        liveCount_ += e[0] == 0.0f;  // newly live (a live value trace is > 0)
-        e[0] = std::max(e[0], f.activation);
-        e[1 + action] = std::max(e[1 + action], f.activation);
+    // The filter writes to the stack, a chunk at a time: a buffer of the agent's own would be one
+    // more cold block for every update of a crowd.
+    constexpr std::size_t kChunk = 64;
+    ActiveFeature strong[kChunk];
+    for (std::size_t from = 0; from < phi.size(); from += kChunk) {
+        const std::size_t end = std::min(phi.size(), from + kChunk);
+        std::size_t n = 0;
+        for (std::size_t i = from; i < end; ++i) {
+            strong[n] = phi[i];
+            n += phi[i].activation >= threshold_;
+        }
+        reserveLive(std::min<std::size_t>(n, featureCount - liveCount_));  // at most that many become live
+        for (std::size_t i = 0; i < n; ++i) {
+            const ActiveFeature& f = strong[i];
+            float* e = trace(f.index);
+            live_[liveCount_] = f.index;
+            liveCount_ += e[0] == 0.0f;  // newly live (a live value trace is > 0)
+            e[0] = std::max(e[0], f.activation);
+            e[1 + action] = std::max(e[1 + action], f.activation);
+        }
     }
 }
 

@@ -102,10 +102,13 @@ private:
     std::vector<float> traces_;         // per feature, stride_ values; zero unless live
     std::vector<std::uint32_t> live_;   // live features in its first liveCount_ entries (sized by need)
     std::uint32_t liveCount_ = 0;
-    std::vector<float> step_;           // eta * delta per trace component (scratch)
-    std::vector<ActiveFeature> strong_; // features active enough to mark a trace (scratch)
-    std::vector<std::uint32_t> trained_; // rows a bounded update trained (scratch)
     const Kernels* kernels_;            // chosen for this CPU (kernels.hpp)
+    // Rarely used, so last (Agent::Impl puts them next to its cold members): eta * delta per
+    // trace component is on the stack up to kStackStride components (a crowd's update then writes
+    // no block of its own for it), else in step_.
+    static constexpr std::uint32_t kStackStride = 16;
+    std::vector<float> step_;
+    std::vector<std::uint32_t> trained_; // rows a bounded update trained (scratch)
 };
 
 }  // namespace verve::core

@@ -39,7 +39,8 @@ void Agent::sampleValueFunction(const std::vector<ValueAxis>& axes, const Observ
 
     Observation obs = base;
     std::vector<float> normalized;
-    core::checkObservation(s.desc, obs.view(), normalized);
+    core::checkObservation(s.desc, obs.view());
+    core::normalizeObservation(s.rep.circular(), obs.view(), normalized);
     obs.continuous = normalized;
     auto set = [&obs](const ValueAxis& axis, std::size_t i) {
         if (axis.kind == SensorKind::Discrete) obs.discrete[axis.index] = static_cast<std::int32_t>(i);
