@@ -15,6 +15,7 @@ float rateFromTimeConstant(float dt, float tau) {
 
 float decayFromTimeConstant(float dt, float tau) { return tau > 0.0f ? std::exp(-dt / tau) : 0.0f; }
 
+// One time constant in steps of dt, rounded (>= 1): rewards further ahead count less than 1/e.
 std::uint32_t stepsWithinTimeConstant(float dt, float tau) {
     const double steps = static_cast<double>(tau) / static_cast<double>(dt);
     if (!(steps < 4e9)) return UINT32_MAX;  // no discount to speak of (or dt underflowing)
@@ -66,7 +67,6 @@ StepConstants Agent::Impl::constantsFor(float dt) const {
     const float bonus = desc.planning && desc.curiosity != CuriosityMode::None ? desc.curiosityFactor : 0.0f;
     const float bonusLow = desc.curiosity == CuriosityMode::Progress ? -bonus : 0.0f;
     k.values = core::valueBounds(brain->rewards, bonusLow, bonus, k.gamma);
-    k.horizon = stepsWithinTimeConstant(dt, desc.tauDiscount);
     return k;
 }
 
@@ -103,7 +103,7 @@ void Agent::Impl::plan(const StepConstants& k) {
     // step that stays at the real state is not replayed (planner.hpp).
     p.onlyPlansThatEnd = !desc.continuousSensors.empty() && !curious;
     p.actorLearnsAtStartOnly = p.onlyPlansThatEnd;
-    if (p.onlyPlansThatEnd) p.maxSteps = std::min(p.maxSteps, k.horizon);
+    if (p.onlyPlansThatEnd) p.maxSteps = std::min(p.maxSteps, stepsWithinTimeConstant(lastDt, desc.tauDiscount));
     p.replaysNoStayAtStart = desc.continuousSensors.empty() && !curious;
     p.predictsChange = brain->modelPredictsChange;
     const core::PlanResult result = planner.run(p, current, normalized.data(), weights, rep, model, rng);

@@ -23,7 +23,6 @@ struct StepConstants {
     float traceDecay = 0.0f;   // gamma * lambda, lambda = e^(-dt / tau_eligibility)
     core::TdRates rates;       // (1 - e^(-dt / tau_value)) / sum, times k for the policy
     core::ValueBounds values;  // what a policy can earn: TD errors bootstrap only from values within it
-    std::uint32_t horizon = 1; // tau_discount / dt steps, rounded (>= 1): rewards beyond count < 1/e
 };
 
 struct Agent::Impl {

@@ -116,10 +116,9 @@ TEST(PlanningLearning, PlanningMatchesRlOnALongCorridor) {
 TEST(PlanningLearning, PlanningFindsTheMovedGoalFasterThanRlAlone) {
     constexpr int kSeeds = 10;
     const TaskInfo* info = findTask("maze1-moving-goal");
-    auto plan = [](AgentDescriptor& d) { d.planning = true; };
     double planned = 0.0, plain = 0.0, worst = 1.0;
     for (std::uint64_t seed = 1; seed <= kSeeds; ++seed) {
-        const LearningCurve p = runExperiment(info->make, 20, 100, seed, plan, 2);
+        const LearningCurve p = runExperiment(info->make, 20, 100, seed, planByDefault, 2);
         const LearningCurve r = runExperiment(info->make, 20, 100, seed, {}, 2);
         planned += windowMean(p.steps, 60, 70) / kSeeds;
         plain += windowMean(r.steps, 60, 70) / kSeeds;
@@ -186,10 +185,9 @@ TEST(PlanningLearning, ContinuousPlanningNoSlowerThanRlOnMaze2) {
 TEST(PlanningLearning, PlanningNoWorseThanRlOnTheBandit) {
     constexpr int kSeeds = 10;
     const TaskInfo* info = findTask("bandit");
-    auto plan = [](AgentDescriptor& d) { d.planning = true; };
     double planned = 0.0, plain = 0.0, plannedBest = 0.0, plainBest = 0.0;
     for (std::uint64_t seed = 1; seed <= kSeeds; ++seed) {
-        const LearningCurve p = runExperiment(info->make, 200, 1000, seed, plan, 2);
+        const LearningCurve p = runExperiment(info->make, 200, 1000, seed, planByDefault, 2);
         const LearningCurve r = runExperiment(info->make, 200, 1000, seed, {}, 2);
         planned += windowMean(p.reward, 900, 1000) / kSeeds;
         plain += windowMean(r.reward, 900, 1000) / kSeeds;
