@@ -1,5 +1,6 @@
 #include <algorithm>
 #include <cmath>
+#include <limits>
 #include <utility>
 
 #include "core/agent_impl.hpp"
@@ -111,14 +112,14 @@ void Agent::Impl::plan(const StepConstants& k) {
     stats.curiosityReward = result.curiosity;
 }
 
-void Agent::Impl::recordProbabilities(const std::uint8_t* allowed) {
+void Agent::Impl::recordProbabilities(const std::uint8_t* allowed, bool uniform) {
     float total = 0.0f;
     for (float y : probabilities) total += y;
-    if (total > 0.0f && std::isfinite(total)) {
+    if (!uniform && total > 0.0f && std::isfinite(total)) {
         for (float& p : probabilities) p /= total;
         return;
     }
-    // Every activation underflowed: the choice was uniform among the allowed actions.
+    // A hopeless state, or every activation underflowed: the choice was uniform among the allowed.
     float count = 0.0f;
     for (std::size_t a = 0; a < probabilities.size(); ++a) {
         probabilities[a] = allowed == nullptr || allowed[a] != 0 ? 1.0f : 0.0f;
@@ -220,10 +221,13 @@ std::uint32_t Agent::update(float reward, ObservationView obs, float dt, ActionM
     // Plan from the state just reached, before acting, so the action already uses what it taught.
     if (plans) s.plan(k);
 
+    // A learning agent explores a state it values at the floor (core::hopelessValue); a greedy or
+    // frozen one plays its policy.
+    const float hopeless = s.learning ? core::hopelessValue(k.values) : -std::numeric_limits<float>::infinity();
     const std::uint32_t action = s.td.chooseAction(s.weights, s.current, s.rng, s.probabilities, s.latestValue,
-                                                   mask.allowed, s.selection == ActionSelection::Greedy);
+                                                   mask.allowed, s.selection == ActionSelection::Greedy, hopeless);
     s.stats.value = core::bounded(s.latestValue, k.values);
-    s.recordProbabilities(mask.allowed);
+    s.recordProbabilities(mask.allowed, s.selection == ActionSelection::Sample && s.latestValue <= hopeless);
     if (s.learning && s.learnsFromRealSteps()) s.td.mark(s.current, action, s.rep.featureCount());
 
     std::swap(s.previous, s.current);

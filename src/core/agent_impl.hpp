@@ -48,8 +48,8 @@ struct Agent::Impl {
     // An update that needed an RBF the budget did not allow: counted and reported (once).
     void noteBudgetReached();
     // probabilities: chooseAction's activations, divided by their sum (uniform over the allowed
-    // actions if all underflowed).
-    void recordProbabilities(const std::uint8_t* allowed);
+    // actions if all underflowed, or if `uniform`: the choice ignored them).
+    void recordProbabilities(const std::uint8_t* allowed, bool uniform);
     static constexpr float kModelErrorAveraging = 0.05f;  // stats.modelError: ~20-step running mean
     bool learnsFromRealSteps() const { return !desc.planning || desc.learnFromRealSteps; }
 

@@ -24,7 +24,7 @@ float TdLearner::value(const WeightTable& w, const std::vector<ActiveFeature>& p
 
 std::uint32_t TdLearner::chooseAction(const WeightTable& w, const std::vector<ActiveFeature>& phi, Rng& rng,
                                       std::vector<float>& activations, float& value, const std::uint8_t* allowed,
-                                      bool greedy) const {
+                                      bool greedy, float uniformAtOrBelow) const {
     // One pass over a row's first columns, [value, policy[A]]; then the value leaves the front.
     activations.resize(stride_);
     kernels_->rowSums(w.data().data(), w.stride(), phi.data(), phi.size(), stride_, activations.data());
@@ -39,7 +39,7 @@ std::uint32_t TdLearner::chooseAction(const WeightTable& w, const std::vector<Ac
         if ((allowed == nullptr || allowed[a] != 0) && (best == numActions_ || y > activations[best])) best = a;
     }
     if (greedy) return best;
-    if (!(total > 0.0f) || !std::isfinite(total)) return uniformAllowed(rng, allowed);
+    if (!(total > 0.0f) || !std::isfinite(total) || value <= uniformAtOrBelow) return uniformAllowed(rng, allowed);
     // Roulette (winner-take-all): each action in proportion to its neuron's activation.
     float pick = rng.uniform() * total;
     for (std::uint32_t a = 0; a < numActions_; ++a) {

@@ -57,6 +57,16 @@ inline ValueBounds valueBounds(RewardRange rewards, float bonusLow, float bonusH
 }
 inline float bounded(float value, ValueBounds b) { return std::clamp(value, b.low, b.high); }
 
+// Where a learning agent gives up on its policy: a state valued within 1e-4 of the way to the floor
+// b.low < 0, the value of a loop that never ends (no end expected within ~9 discount time constants,
+// e^-9.2 = 1e-4). Nothing there is learned any more: every TD error of a step that stays at the floor
+// is 0, so an actor saturated on the loop (pushing into a wall) kept it for good while states that
+// lead out went untried (docs/algorithm.md, "A changing world: hopeless states explore"). Such a
+// state chooses uniformly; -infinity when the rewards allow no floor below 0.
+inline float hopelessValue(ValueBounds b) {
+    return b.low < 0.0f ? b.low * (1.0f - 1e-4f) : -std::numeric_limits<float>::infinity();
+}
+
 class TdLearner {
 public:
     static constexpr float kStepLimit = 1e12f;  // trainAndDecay's clamp on a weight's step (traces <= 1)
@@ -66,10 +76,12 @@ public:
     // Roulette choice over the sigmoid action activations y_a (left in `activations`); one pass
     // over the features also yields V(s) into `value`. `allowed` (numActions flags, or nullptr for
     // all) zeroes the activation of every action not allowed, so it is never chosen; `greedy` takes
-    // the largest activation (the lowest index on ties) and draws no random number.
+    // the largest activation (the lowest index on ties) and draws no random number; otherwise a
+    // state whose V(s) is at or below `uniformAtOrBelow` chooses uniformly among the allowed actions.
     std::uint32_t chooseAction(const WeightTable& w, const std::vector<ActiveFeature>& phi, Rng& rng,
                                std::vector<float>& activations, float& value,
-                               const std::uint8_t* allowed = nullptr, bool greedy = false) const;
+                               const std::uint8_t* allowed = nullptr, bool greedy = false,
+                               float uniformAtOrBelow = -std::numeric_limits<float>::infinity()) const;
 
     // w += eta * delta * e over the live traces, then e *= decay; traces whose every component
     // falls below the threshold are dropped. One pass: both follow the live list.

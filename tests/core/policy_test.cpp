@@ -102,6 +102,78 @@ TEST(ActionSelection, GreedyPlaysTheMostProbableActionAndDrawsNoRandomNumber) {
     EXPECT_EQ(agent.actionSelection(), ActionSelection::Greedy);
 }
 
+namespace {
+
+// State 0 valued below the floor that -1 per step for ever earns (-1 / (1 - gamma)), state 1 at 0,
+// and both with an actor saturated on action 0 (sigma(30) against sigma(-30)).
+AgentSnapshot saturatedAtTheFloor(float rewardLow) {
+    Agent seed(discreteAgent(3));
+    seed.update(0.0f, discreteObs(0), 0.1f);
+    seed.update(0.0f, discreteObs(1), 0.1f);
+    seed.resetShortTermMemory();
+    AgentSnapshot s = seed.snapshot();
+    s.rewardLow = rewardLow;
+    for (std::size_t f = 0; f < 2; ++f) {
+        float* row = s.weights.data() + f * s.stride;
+        row[0] = f == 0 ? -20.0f : 0.0f;
+        row[1] = 30.0f;
+        row[2] = row[3] = -30.0f;
+    }
+    return s;
+}
+
+// Counts each action chosen over `n` updates in `state`, rewarded `reward` each step.
+std::vector<int> choices(Agent& agent, std::int32_t state, float reward, int n) {
+    std::vector<int> count(3, 0);
+    for (int i = 0; i < n; ++i) ++count[agent.update(reward, discreteObs(state), 0.1f)];
+    return count;
+}
+
+}  // namespace
+
+// Every step of a loop valued at the floor has a TD error of 0, so nothing there is learned: a
+// learning agent that samples explores such a state uniformly instead of keeping a saturated habit
+// (docs/algorithm.md, "A changing world: hopeless states explore").
+TEST(HopelessStates, ExploreUniformlyWhileLearningAndSampling) {
+    const AgentSnapshot s = saturatedAtTheFloor(-1.0f);
+    Agent agent(s);
+    const std::vector<int> count = choices(agent, 0, -1.0f, 600);
+    for (int c : count) EXPECT_GT(c, 150) << "expected ~200 of 600 each";
+    for (float p : agent.actionProbabilities()) EXPECT_FLOAT_EQ(p, 1.0f / 3.0f);
+    EXPECT_NEAR(agent.snapshot().weights[0], -20.0f, 1e-3f);  // at the floor nothing is learned
+
+    Agent above(s);  // state 1 is not at the floor: the habit plays
+    EXPECT_EQ(choices(above, 1, -1.0f, 100)[0], 100);
+    EXPECT_GT(above.actionProbabilities()[0], 0.999f);
+
+    Agent greedy(s);
+    greedy.setActionSelection(ActionSelection::Greedy);
+    EXPECT_EQ(choices(greedy, 0, -1.0f, 100)[0], 100);
+
+    Agent frozen(s);
+    frozen.setLearning(false);
+    EXPECT_EQ(choices(frozen, 0, -1.0f, 100)[0], 100);
+    EXPECT_GT(frozen.actionProbabilities()[0], 0.999f);
+
+    // With an action mask, uniformly among the allowed actions.
+    Agent masked(s);
+    const std::uint8_t allowed[3] = {0, 1, 1};
+    std::vector<int> maskedCount(3, 0);
+    for (int i = 0; i < 400; ++i) {
+        ++maskedCount[masked.update(-1.0f, discreteObs(0).view(), 0.1f, ActionMask{allowed, 3})];
+    }
+    EXPECT_EQ(maskedCount[0], 0);
+    EXPECT_GT(maskedCount[1], 150);
+    EXPECT_GT(maskedCount[2], 150);
+    EXPECT_FLOAT_EQ(masked.actionProbabilities()[1], 0.5f);
+}
+
+// Rewards that were never negative set no floor below 0: a state valued at 0 or below plays its policy.
+TEST(HopelessStates, NoFloorWithoutNegativeRewards) {
+    Agent agent(saturatedAtTheFloor(0.0f));
+    EXPECT_EQ(choices(agent, 0, 0.0f, 100)[0], 100);
+}
+
 TEST(ActionMask, MaskedActionsAreNeverChosenAndGetNoCredit) {
     Agent agent(discreteAgent(4));
     const std::uint8_t allowed[4] = {0, 1, 0, 1};

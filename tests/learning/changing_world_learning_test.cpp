@@ -88,3 +88,22 @@ TEST(ChangingWorldLearning, HotPlateWhoseSafeEndSwapsIsRelearned) {
     EXPECT_LE(late.excess(), 0.5);
     EXPECT_DOUBLE_EQ(windowOf(c, 150, 200).success, 1.0);
 }
+
+// A run that once failed must not stay failed: on the long corridor (-1 per step, 40 cells, gamma
+// 0.99, trials cut at 2,000 steps) a run that once wandered long enough drove the start region to
+// the value floor, where every TD error is 0, with its actor saturated on pushing into the wall: it
+// stayed at the cap for every later trial (seeds 1-10, 10 runs each, trials 91-100: 352.8 steps, the
+// worst seed at the goal in 70% of them). Hopeless states now explore (core::hopelessValue): every
+// run of every seed takes the optimal 39 steps.
+TEST(ChangingWorldLearning, NoRunStaysStuckOnALongCorridor) {
+    const TaskInfo* info = findTask("corridor");
+    double steps = 0.0, worst = 1.0;
+    for (std::uint64_t seed = 1; seed <= 10; ++seed) {
+        const LearningCurve c = runExperiment(info->make, 10, 100, seed, {}, 2);
+        steps += windowMean(c.steps, 90, 100) / 10.0;
+        worst = std::min(worst, windowMean(c.success, 90, 100));
+    }
+    std::printf("corridor, trials 91-100 over seeds 1-10: %.2f steps, worst seed at the goal %.3f\n", steps, worst);
+    EXPECT_DOUBLE_EQ(worst, 1.0);
+    EXPECT_LE(steps, 39.5);
+}
