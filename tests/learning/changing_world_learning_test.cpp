@@ -55,8 +55,9 @@ TEST(ChangingWorldLearning, CueToActionIsRelearnedAfterHalfTheCuesChange) {
 
 TEST(ChangingWorldLearning, MazeGoalThatMovesIsFoundAgain) {
     // Maze #1's goal moves from (7, 1) to (0, 9) at trial 50 (optimum 22, then 9). The task bounds
-    // the actor weights (3); with the defaults these seeds leave runs on the old path (from trial
-    // 60 on, the worst seed finds the goal in 92.7% of trials; 310 steps on trials 60-69).
+    // the actor weights (3); with the defaults these seeds left runs on the old path (from trial 60
+    // on, the worst seed found the goal in 92.7% of trials; 310 steps on trials 60-69) until hopeless
+    // states explored (core::hopelessValue).
     constexpr int kSeeds = 10;
     const TaskInfo* info = findTask("maze1-moving-goal");
     Window soon, late;
@@ -73,7 +74,7 @@ TEST(ChangingWorldLearning, MazeGoalThatMovesIsFoundAgain) {
     print("maze1-moving-goal trials 60-69, 10 seeds", soon);
     print("maze1-moving-goal trials 90-99, 10 seeds", late);
     EXPECT_DOUBLE_EQ(worst, 1.0);  // from trial 60 on, every run of every seed finds the new goal every time
-    EXPECT_LE(soon.steps, 60.0);   // measured 38.3
+    EXPECT_LE(soon.steps, 60.0);   // measured 38.5 (38.3 before hopeless states explored)
     EXPECT_LE(late.excess(), 12.0);
 }
 
