@@ -153,8 +153,9 @@ TEST(PlanningLearning, ContinuousPlanningNoSlowerThanRlOnMaze1) {
 // plans 461.6; with 10 runs each (the standard error of a mean ~20) this test read 472.4 / 498.6 /
 // 505.5, and after that change 378.7 / 435.0 / 421.7: too few runs to order the long plans and RL,
 // hence 30. While imagined steps past the first taught the actor, planning took 505.8 against 469.9
-// (30 runs): the preference for "up" that plans taught beside the goal leaked through overlapping RBFs across the wall into the dead end
-// on its other side, where planning agents spent 5-10x RL's time (docs/planning.md).
+// (30 runs): the preference for "up" that plans taught beside the goal leaked through overlapping
+// RBFs across the wall into the dead end on its other side, where planning agents spent 5-10x RL's
+// time (docs/planning.md).
 // Long plans (<= 50 steps, threshold 0.1, the original's maze #2 settings): before such plans looked
 // only one discount time constant ahead (10 steps here) they took 540.6 (10 runs; seed 1: 453.2 against
 // RL's 437.0): from far away, the rollouts that reach the goal are the policy's rare lucky ones
