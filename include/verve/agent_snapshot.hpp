@@ -33,6 +33,11 @@ struct AgentSnapshot {
     // bound those versions used.
     float rewardLow = -1.0f;
     float rewardHigh = 1.0f;
+    // Of those, the ones that ended a trial (end_episode) are counted here instead, within the same
+    // limits: a final reward bounds a value once, not for ever. Saves that predate the split read
+    // [0, 0] (their rewardLow/High hold every reward, so their bounds are as wide as they were).
+    float finalRewardLow = 0.0f;
+    float finalRewardHigh = 0.0f;
     // Whether the model's weights predict how far each continuous sensor moves (true: every agent
     // made now) or where it lands (false: saves that predate the field, 0.1.0 among them, which keep
     // working so).

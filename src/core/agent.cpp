@@ -139,7 +139,7 @@ void Agent::Impl::reserveFor(std::uint32_t features, std::size_t active) {
     if (desc.planning) planner.reserve(features);
 }
 
-float Agent::Impl::learnedReward(float reward) {
+float Agent::Impl::learnedReward(float reward, bool final) {
     const float r = std::clamp(reward, -1.0f, 1.0f);
     if (r != reward) {
         ++stats.clampedRewards;
@@ -148,7 +148,10 @@ float Agent::Impl::learnedReward(float reward) {
                        "agent, counted in stats.clamped_rewards)", static_cast<double>(reward));
         }
     }
-    if (learning && hasPrevious) brain->rewards.see(r);
+    if (learning && hasPrevious) {
+        if (final) brain->rewards.seeFinal(r);
+        else brain->rewards.see(r);
+    }
     return r;
 }
 
@@ -245,7 +248,7 @@ std::uint32_t Agent::update(float reward, ObservationView obs, float dt, ActionM
 void Agent::endEpisode(float finalReward) {
     Impl& s = *impl_;
     core::checkFinite(finalReward, "final reward");
-    const float r = s.learnedReward(finalReward);
+    const float r = s.learnedReward(finalReward, true);
     if (s.learning && s.hasPrevious && s.desc.planning) s.learnModelTerminal(r);
     if (s.learning && s.hasPrevious && s.learnsFromRealSteps()) {
         // Terminal: nothing lies beyond, so no value is bootstrapped (delta = r - V(s)).

@@ -43,8 +43,8 @@ struct Agent::Impl {
     // then leaves the agent as it was.
     void reserveFor(std::uint32_t features, std::size_t active);
     // The reward of the step that ends now, within [-1, 1] (a clamp is counted and reported, once
-    // per agent); a learning agent adds it to its brain's reward range.
-    float learnedReward(float reward);
+    // per agent); a learning agent adds it to its brain's reward range (`final`: a trial's end).
+    float learnedReward(float reward, bool final = false);
     // An update that needed an RBF the budget did not allow: counted and reported (once).
     void noteBudgetReached();
     // probabilities: chooseAction's activations, divided by their sum (uniform over the allowed

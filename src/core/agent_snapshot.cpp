@@ -66,7 +66,11 @@ std::unique_ptr<Agent::Impl> restoreAgent(const AgentSnapshot& snap) {
     if (!(snap.rewardLow >= -1.0f && snap.rewardLow <= 0.0f && snap.rewardHigh >= 0.0f && snap.rewardHigh <= 1.0f)) {
         corrupt("the reward range must satisfy -1 <= low <= 0 <= high <= 1");
     }
-    s.brain->rewards = core::RewardRange{snap.rewardLow, snap.rewardHigh};
+    if (!(snap.finalRewardLow >= -1.0f && snap.finalRewardLow <= 0.0f && snap.finalRewardHigh >= 0.0f &&
+          snap.finalRewardHigh <= 1.0f)) {
+        corrupt("the final reward range must satisfy -1 <= low <= 0 <= high <= 1");
+    }
+    s.brain->rewards = core::RewardRange{snap.rewardLow, snap.rewardHigh, snap.finalRewardLow, snap.finalRewardHigh};
     s.brain->modelPredictsChange = snap.modelPredictsChange;
 
     // Traces: optional (an empty list restores none).
@@ -137,6 +141,8 @@ void snapshotBrain(const BrainState& brain, AgentSnapshot& snap) {
     snap.weights = brain.weights.data();
     snap.rewardLow = brain.rewards.low;
     snap.rewardHigh = brain.rewards.high;
+    snap.finalRewardLow = brain.rewards.finalLow;
+    snap.finalRewardHigh = brain.rewards.finalHigh;
     snap.modelPredictsChange = brain.modelPredictsChange;
     snap.traceStride = 1 + brain.desc.numActions;
 }

@@ -88,7 +88,7 @@ PlanResult Planner::run(const PlanSettings& s, const std::vector<ActiveFeature>&
             }
             break;
         }
-        const float reward = std::clamp(prediction_.reward, s.rewards.low, s.rewards.high) + bonus;
+        const float reward = std::clamp(prediction_.reward, s.rewards.anyLow(), s.rewards.anyHigh()) + bonus;
         result.curiosity += bonus;
         ++result.steps;
         if (ends) {  // the trial ends: nothing to bootstrap from

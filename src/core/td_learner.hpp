@@ -27,15 +27,26 @@ struct TdRates {
 };
 
 // The real rewards an agent has learned from, widened to include 0 (a trial may end before any
-// reward). They bound what any policy can earn: every discounted sum of rewards within [low, high]
-// lies within [low, high] / (1 - gamma).
+// reward): [low, high] those of steps (update, truncateEpisode), [finalLow, finalHigh] those that
+// ended a trial (endEpisode). They bound what any policy can earn: a return of step rewards within
+// [low, high] that may end with one final reward within [finalLow, finalHigh] lies within
+// [min(low / (1 - gamma), finalLow), max(high / (1 - gamma), finalHigh)] (a weighted mean of the two
+// ends: gamma^n of the final one). A goal's +1 that ends the trial counts once, not for ever.
 struct RewardRange {
     float low = 0.0f;
     float high = 0.0f;
+    float finalLow = 0.0f;
+    float finalHigh = 0.0f;
     void see(float reward) {
         low = std::min(low, reward);
         high = std::max(high, reward);
     }
+    void seeFinal(float reward) {
+        finalLow = std::min(finalLow, reward);
+        finalHigh = std::max(finalHigh, reward);
+    }
+    float anyLow() const { return std::min(low, finalLow); }
+    float anyHigh() const { return std::max(high, finalHigh); }
 };
 
 struct ValueBounds {
@@ -53,7 +64,8 @@ inline float discountedForever(float reward, float gamma) {
     return gamma < 1.0f ? reward / (1.0f - gamma) : std::copysign(std::numeric_limits<float>::infinity(), reward);
 }
 inline ValueBounds valueBounds(RewardRange rewards, float bonusLow, float bonusHigh, float gamma) {
-    return ValueBounds{discountedForever(rewards.low + bonusLow, gamma), discountedForever(rewards.high + bonusHigh, gamma)};
+    return ValueBounds{std::min(discountedForever(rewards.low + bonusLow, gamma), rewards.finalLow + bonusLow),
+                       std::max(discountedForever(rewards.high + bonusHigh, gamma), rewards.finalHigh + bonusHigh)};
 }
 inline float bounded(float value, ValueBounds b) { return std::clamp(value, b.low, b.high); }
 

@@ -58,6 +58,10 @@ void transferPayload(Io& io, Snapshot& s, Flag& shortTerm, std::uint32_t version
         io.value("reward_high", s.rewardHigh);
     }
     if (version >= 3) io.flag("model_predicts_change", s.modelPredictsChange);
+    if (version >= 4) {
+        io.value("final_reward_low", s.finalRewardLow);
+        io.value("final_reward_high", s.finalRewardHigh);
+    }
     io.flag("short_term_memory", shortTerm);
     if (!shortTerm) return;
     io.value("trace_stride", s.traceStride);

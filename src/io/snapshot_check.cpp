@@ -136,6 +136,9 @@ void checkSnapshot(const AgentSnapshot& s) {
     if (!(s.rewardLow >= -1.0f && s.rewardLow <= 0.0f && s.rewardHigh >= 0.0f && s.rewardHigh <= 1.0f)) {
         fail("the reward range is not -1 <= low <= 0 <= high <= 1");
     }
+    if (!(s.finalRewardLow >= -1.0f && s.finalRewardLow <= 0.0f && s.finalRewardHigh >= 0.0f && s.finalRewardHigh <= 1.0f)) {
+        fail("the final reward range is not -1 <= low <= 0 <= high <= 1");
+    }
 }
 
 }  // namespace verve::io

@@ -128,6 +128,9 @@ void readState(pugi::xml_node root, AgentSnapshot& s) {
     s.lastDt = readFloat(n, "last_dt");
     if (n.attribute("reward_low")) s.rewardLow = readFloat(n, "reward_low");  // absent: the snapshot's [-1, 1]
     if (n.attribute("reward_high")) s.rewardHigh = readFloat(n, "reward_high");
+    // absent: a save from before final rewards were counted apart, [0, 0]
+    if (n.attribute("final_reward_low")) s.finalRewardLow = readFloat(n, "final_reward_low");
+    if (n.attribute("final_reward_high")) s.finalRewardHigh = readFloat(n, "final_reward_high");
     if (n.attribute("continuous_model")) {  // absent: an older save (0.1.0 among them), whose model predicts positions
         const std::string_view model = attributeText(n, "continuous_model");
         if (model == "change") s.modelPredictsChange = true;

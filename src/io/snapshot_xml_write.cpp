@@ -97,6 +97,8 @@ void writeState(pugi::xml_node root, const AgentSnapshot& s) {
     setNumber(n, "last_dt", s.lastDt);
     setNumber(n, "reward_low", s.rewardLow);
     setNumber(n, "reward_high", s.rewardHigh);
+    setNumber(n, "final_reward_low", s.finalRewardLow);
+    setNumber(n, "final_reward_high", s.finalRewardHigh);
     n.append_attribute("continuous_model").set_value(s.modelPredictsChange ? "change" : "position");
     std::string rng;
     for (std::uint64_t word : s.rng) {

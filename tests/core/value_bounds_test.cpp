@@ -25,6 +25,29 @@ TEST(ValueBounds, FollowTheRewardsSeenWithZeroIncluded) {
     EXPECT_EQ(bounded(1.0f, b), 1.0f);
 }
 
+// A reward that ends the trial is earned once: -1 per step until a goal's +1 allows no value above
+// +1 (at gamma 0.9, not the +10 of +1 for ever), and a final -1 after steps of 0 none below -1.
+TEST(ValueBounds, AFinalRewardCountsOnce) {
+    RewardRange r;
+    r.see(-1.0f);
+    r.seeFinal(1.0f);
+    ValueBounds b = valueBounds(r, 0.0f, 0.0f, 0.9f);
+    EXPECT_NEAR(b.low, -10.0f, 1e-4f);
+    EXPECT_EQ(b.high, 1.0f);
+    EXPECT_EQ(r.anyLow(), -1.0f);  // what a predicted reward is clamped to
+    EXPECT_EQ(r.anyHigh(), 1.0f);
+
+    RewardRange fall;
+    fall.see(0.5f);
+    fall.seeFinal(-1.0f);
+    b = valueBounds(fall, 0.0f, 0.0f, 0.9f);
+    EXPECT_EQ(b.low, -1.0f);
+    EXPECT_NEAR(b.high, 5.0f, 1e-4f);
+    // Step rewards above the final one: earning them for ever is the most.
+    fall.seeFinal(0.25f);
+    EXPECT_NEAR(valueBounds(fall, 0.0f, 0.0f, 0.9f).high, 5.0f, 1e-4f);
+}
+
 TEST(ValueBounds, CuriosityWidensThemByItsBonus) {
     RewardRange r;
     r.see(0.5f);

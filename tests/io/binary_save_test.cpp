@@ -159,17 +159,21 @@ TEST(BinarySave, BrainSavesLoadAsBrainsAndAsAgentsExactly) {
 // Version 1 (before the reward range) is version 2 without the range's 8 bytes after the weights.
 // Such a save loads with the widest range, [-1, 1], the value bound version 1 used.
 // The save of `snap` as an older binary format version wrote it: the fields that version did not
-// have (after the weights: the reward range from version 2, the model flag from version 3) removed.
+// have (after the weights: the reward range from version 2, the model flag from version 3, the final
+// reward range from version 4) removed.
 std::string asVersion(std::string bytes, const AgentSnapshot& snap, std::uint32_t version) {
-    char tail[13];
+    char tail[21];
     std::memcpy(tail, &snap.weights.back(), 4);
     std::memcpy(tail + 4, &snap.rewardLow, 4);
     std::memcpy(tail + 8, &snap.rewardHigh, 4);
     tail[12] = snap.modelPredictsChange ? 1 : 0;
-    const std::size_t at = bytes.find(std::string(tail, 13), io::kBinaryHeaderBytes);
+    std::memcpy(tail + 13, &snap.finalRewardLow, 4);
+    std::memcpy(tail + 17, &snap.finalRewardHigh, 4);
+    const std::size_t at = bytes.find(std::string(tail, 21), io::kBinaryHeaderBytes);
     if (at == std::string::npos) return {};
-    if (version == 1) bytes.erase(at + 4, 9);
-    if (version == 2) bytes.erase(at + 12, 1);
+    if (version == 1) bytes.erase(at + 4, 17);
+    if (version == 2) bytes.erase(at + 12, 9);
+    if (version == 3) bytes.erase(at + 13, 8);
     const std::uint64_t payload = bytes.size() - io::kBinaryHeaderBytes;
     const std::uint64_t sum = io::payloadChecksum(bytes.data() + io::kBinaryHeaderBytes, payload);
     std::memcpy(&bytes[8], &version, 4);
@@ -194,6 +198,21 @@ TEST(BinarySave, Version1SavesLoadWithTheWidestRewardRange) {
     snap.rewardLow = -1.0f;
     snap.rewardHigh = 1.0f;
     snap.modelPredictsChange = false;
+    snap.finalRewardLow = snap.finalRewardHigh = 0.0f;
+    expectSameSnapshot(snap, loaded);
+}
+
+// A save from before final rewards were counted apart reads [0, 0] for them: its reward range holds
+// every reward it learned from, so its value bounds stay as wide as they were.
+TEST(BinarySave, Version3SavesReadNoFinalRewardRange) {
+    Agent agent = trainedAgent(iotest::plannerDescriptor(), 410);
+    AgentSnapshot snap = agent.snapshot();
+    ASSERT_LT(snap.finalRewardLow, 0.0f);  // the test's trials end with rewards of both signs
+    ASSERT_GT(snap.finalRewardHigh, 0.0f);
+    const std::string bytes = asVersion(binarySave(agent), snap, 3);
+    ASSERT_FALSE(bytes.empty());
+    const AgentSnapshot loaded = loadAgentFromMemory(bytes.data(), bytes.size()).snapshot();
+    snap.finalRewardLow = snap.finalRewardHigh = 0.0f;
     expectSameSnapshot(snap, loaded);
 }
 
@@ -205,6 +224,7 @@ TEST(BinarySave, Version2SavesKeepAModelThatPredictsPositions) {
     ASSERT_FALSE(bytes.empty());
     Agent loaded = loadAgentFromMemory(bytes.data(), bytes.size());
     snap.modelPredictsChange = false;
+    snap.finalRewardLow = snap.finalRewardHigh = 0.0f;
     expectSameSnapshot(snap, loaded.snapshot());
     // It learns on as it did, and its next save says so.
     iotest::Feed feed(5);

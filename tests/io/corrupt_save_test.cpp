@@ -137,7 +137,9 @@ TEST_F(CorruptSave, BadAttributeValuesAreNamed) {
                   ErrorCode::Format, "rng");
     expectRefused(edited([](pugi::xml_node r) { r.child("state").attribute("continuous_model").set_value("speed"); }),
                   ErrorCode::Format, "continuous_model");
-    for (const char* range : {"reward_low=0.5", "reward_low=-1.5", "reward_high=-0.25", "reward_high=2", "reward_low=nan"}) {
+    for (const char* range : {"reward_low=0.5", "reward_low=-1.5", "reward_high=-0.25", "reward_high=2", "reward_low=nan",
+                              "final_reward_low=0.5", "final_reward_low=-1.5", "final_reward_high=-0.25",
+                              "final_reward_high=2", "final_reward_high=nan"}) {
         const std::string edit = range;
         const std::string name = edit.substr(0, edit.find('='));
         const std::string value = edit.substr(edit.find('=') + 1);

@@ -128,6 +128,8 @@ inline void expectSameSnapshot(const AgentSnapshot& a, const AgentSnapshot& b, b
     EXPECT_TRUE(sameBits(a.weights, b.weights));
     EXPECT_EQ(a.rewardLow, b.rewardLow);
     EXPECT_EQ(a.rewardHigh, b.rewardHigh);
+    EXPECT_EQ(a.finalRewardLow, b.finalRewardLow);
+    EXPECT_EQ(a.finalRewardHigh, b.finalRewardHigh);
     EXPECT_EQ(a.modelPredictsChange, b.modelPredictsChange);
     EXPECT_EQ(a.rng, b.rng);
     EXPECT_EQ(a.steps, b.steps);

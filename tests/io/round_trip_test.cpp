@@ -3,7 +3,9 @@
 
 #include <cstdio>
 #include <filesystem>
+#include <initializer_list>
 #include <sstream>
+#include <string>
 
 #include <pugixml.hpp>
 
@@ -17,6 +19,16 @@ using iotest::expectSameFuture;
 using iotest::expectSameSnapshot;
 using iotest::trainedAgent;
 
+// The XML save with these attributes of <state> removed: how a save from before them reads.
+std::string withoutStateAttributes(const std::string& xml, std::initializer_list<const char*> names) {
+    pugi::xml_document doc;
+    EXPECT_TRUE(doc.load_string(xml.c_str()));
+    pugi::xml_node state = doc.document_element().child("state");
+    for (const char* name : names) EXPECT_TRUE(state.remove_attribute(name)) << name;
+    std::ostringstream old;
+    doc.save(old);
+    return old.str();
+}
 
 TEST(RoundTrip, MixedSensorsMidTrialFromMemory) {
     Agent agent = trainedAgent(iotest::mixedDescriptor(), 410);  // 410: stops mid-trial
@@ -100,16 +112,29 @@ TEST(RoundTrip, RewardRangeIsKeptAndOldSavesGetTheWidest) {
     EXPECT_EQ(loaded.rewardHigh, agent.snapshot().rewardHigh);
     EXPECT_LT(loaded.rewardLow, 0.0f);
 
-    pugi::xml_document doc;
-    ASSERT_TRUE(doc.load_string(xml.c_str()));
-    pugi::xml_node state = doc.document_element().child("state");
-    ASSERT_TRUE(state.remove_attribute("reward_low"));
-    ASSERT_TRUE(state.remove_attribute("reward_high"));
-    std::ostringstream old;
-    doc.save(old);
-    const AgentSnapshot widest = loadAgentFromMemory(old.str().data(), old.str().size()).snapshot();
+    const std::string old = withoutStateAttributes(xml, {"reward_low", "reward_high"});
+    const AgentSnapshot widest = loadAgentFromMemory(old.data(), old.size()).snapshot();
     EXPECT_EQ(widest.rewardLow, -1.0f);
     EXPECT_EQ(widest.rewardHigh, 1.0f);
+}
+
+// The final rewards (those that ended a trial) are saved apart; a save from before that reads [0, 0]
+// for them, and its reward range, which holds every reward, keeps its bounds as wide as they were.
+TEST(RoundTrip, FinalRewardRangeIsKeptAndOldSavesReadNone) {
+    Agent agent = trainedAgent(iotest::plannerDescriptor(), 120);
+    const AgentSnapshot snap = agent.snapshot();
+    ASSERT_LT(snap.finalRewardLow, 0.0f);
+    ASSERT_GT(snap.finalRewardHigh, 0.0f);
+    const std::string xml = saveAgentToString(agent);
+    const AgentSnapshot loaded = loadAgentFromMemory(xml.data(), xml.size()).snapshot();
+    EXPECT_EQ(loaded.finalRewardLow, snap.finalRewardLow);
+    EXPECT_EQ(loaded.finalRewardHigh, snap.finalRewardHigh);
+
+    const std::string old = withoutStateAttributes(xml, {"final_reward_low", "final_reward_high"});
+    const AgentSnapshot none = loadAgentFromMemory(old.data(), old.size()).snapshot();
+    EXPECT_EQ(none.finalRewardLow, 0.0f);
+    EXPECT_EQ(none.finalRewardHigh, 0.0f);
+    EXPECT_EQ(none.rewardLow, snap.rewardLow);
 }
 
 // New agents' models predict how far continuous sensors move; a save from before that keeps a
@@ -120,12 +145,8 @@ TEST(RoundTrip, TheModelsMeaningIsKeptAndOldSavesPredictPositions) {
     EXPECT_NE(xml.find("continuous_model=\"change\""), std::string::npos);
     EXPECT_TRUE(loadAgentFromMemory(xml.data(), xml.size()).snapshot().modelPredictsChange);
 
-    pugi::xml_document doc;
-    ASSERT_TRUE(doc.load_string(xml.c_str()));
-    ASSERT_TRUE(doc.document_element().child("state").remove_attribute("continuous_model"));
-    std::ostringstream old;
-    doc.save(old);
-    Agent loaded = loadAgentFromMemory(old.str().data(), old.str().size());
+    const std::string old = withoutStateAttributes(xml, {"continuous_model"});
+    Agent loaded = loadAgentFromMemory(old.data(), old.size());
     EXPECT_FALSE(loaded.snapshot().modelPredictsChange);
     iotest::Feed feed(5);
     iotest::drive(loaded, feed, 50);

@@ -227,50 +227,54 @@ TEST(PlanningAgent, ImaginedStepsThatStayAtTheRealStateAreNotLearned) {
     EXPECT_GT(curiousSteps, 0u);
 }
 
-// Every real reward of this walk is -1 until the goal, where the trial ends with 0, so no policy can
-// earn a value above 0. Unnormalised RBFs plus TD(lambda) still push the weights' sum above 0 at
-// some states (+4.9 over these runs before values were bounded by the rewards seen); what the agent
-// uses and reports -- bootstrapped values, stats.value, the sampled value function -- stays within
-// [-1, 0] / (1 - gamma), with planning on or off.
+// Every real reward of this walk is -1 until the goal, where the trial ends with `goal` (0, or +1
+// once), so no policy can earn a value above `goal`. Unnormalised RBFs plus TD(lambda) still push the
+// weights' sum above it at some states (+4.9 over these runs before values were bounded by the
+// rewards seen; with the goal's +1, values up to +6.3 on the long corridor while a final reward
+// bounded them as if it came every step); what the agent uses and reports -- bootstrapped values,
+// stats.value, the sampled value function -- stays within [-1 / (1 - gamma), goal], with planning on
+// or off.
 TEST(PlanningAgent, ValuesStayWithinWhatTheRealRewardsAllow) {
     constexpr int kCells = 40;
-    for (const bool planning : {true, false}) {
-        float highest = -1e9f, lowest = 1e9f, highestSampled = -1e9f;
-        for (std::uint64_t run = 0; run < 5; ++run) {
-            AgentDescriptor d;
-            d.addContinuousSensor();
-            d.numActions = 3;  // left, right, stay
-            d.tauDiscount = 10.0f;  // gamma 0.99 at dt 0.1
-            d.planning = planning;
-            d.tauModel = 0.0f;
-            d.maxPlanningSteps = 50;
-            d.seed = 1000 + run;
-            Agent agent(d);
-            Observation obs(d);
-            for (int trial = 0; trial < 30; ++trial) {
-                int x = 0;
-                float reward = 0.0f;
-                bool reached = false;
-                for (int step = 0; step < 2000 && !reached; ++step) {
-                    obs.continuous[0] = -1.0f + 2.0f * static_cast<float>(x) / (kCells - 1);
-                    const std::uint32_t a = agent.update(reward, obs, 0.1f);
-                    highest = std::max(highest, agent.stats().value);
-                    lowest = std::min(lowest, agent.stats().value);
-                    x = a == 0 ? std::max(0, x - 1) : a == 1 ? std::min(kCells - 1, x + 1) : x;
-                    reached = x == kCells - 1;
-                    reward = -1.0f;
+    for (const float goal : {0.0f, 1.0f}) {
+        for (const bool planning : {true, false}) {
+            float highest = -1e9f, lowest = 1e9f, highestSampled = -1e9f;
+            for (std::uint64_t run = 0; run < 5; ++run) {
+                AgentDescriptor d;
+                d.addContinuousSensor();
+                d.numActions = 3;  // left, right, stay
+                d.tauDiscount = 10.0f;  // gamma 0.99 at dt 0.1
+                d.planning = planning;
+                d.tauModel = 0.0f;
+                d.maxPlanningSteps = 50;
+                d.seed = 1000 + run;
+                Agent agent(d);
+                Observation obs(d);
+                for (int trial = 0; trial < 30; ++trial) {
+                    int x = 0;
+                    float reward = 0.0f;
+                    bool reached = false;
+                    for (int step = 0; step < 2000 && !reached; ++step) {
+                        obs.continuous[0] = -1.0f + 2.0f * static_cast<float>(x) / (kCells - 1);
+                        const std::uint32_t a = agent.update(reward, obs, 0.1f);
+                        highest = std::max(highest, agent.stats().value);
+                        lowest = std::min(lowest, agent.stats().value);
+                        x = a == 0 ? std::max(0, x - 1) : a == 1 ? std::min(kCells - 1, x + 1) : x;
+                        reached = x == kCells - 1;
+                        reward = -1.0f;
+                    }
+                    if (reached) agent.endEpisode(goal);
+                    else agent.truncateEpisode(reward);
                 }
-                if (reached) agent.endEpisode(0.0f);
-                else agent.truncateEpisode(reward);
+                float sampled[64];
+                agent.sampleValueFunction({ValueAxis{SensorKind::Continuous, 0, 64}}, obs, sampled, 64);
+                for (float v : sampled) highestSampled = std::max(highestSampled, v);
             }
-            float sampled[64];
-            agent.sampleValueFunction({ValueAxis{SensorKind::Continuous, 0, 64}}, obs, sampled, 64);
-            for (float v : sampled) highestSampled = std::max(highestSampled, v);
+            const float floor = -1.0f / (1.0f - std::exp(-0.1f / 10.0f));
+            EXPECT_LE(highest, goal) << "planning " << planning << ", goal " << goal;
+            EXPECT_LE(highestSampled, goal) << "planning " << planning << ", goal " << goal;
+            EXPECT_GE(lowest, floor) << "planning " << planning << ", goal " << goal;
+            EXPECT_LT(lowest, -5.0f) << "planning " << planning << ", goal " << goal;  // the values did learn the cost
         }
-        const float floor = -1.0f / (1.0f - std::exp(-0.1f / 10.0f));
-        EXPECT_LE(highest, 0.0f) << "planning " << planning;
-        EXPECT_LE(highestSampled, 0.0f) << "planning " << planning;
-        EXPECT_GE(lowest, floor) << "planning " << planning;
-        EXPECT_LT(lowest, -5.0f) << "planning " << planning;  // the values did learn the cost
     }
 }
