@@ -70,11 +70,12 @@ inline ValueBounds valueBounds(RewardRange rewards, float bonusLow, float bonusH
 inline float bounded(float value, ValueBounds b) { return std::clamp(value, b.low, b.high); }
 
 // Where a learning agent gives up on its policy: a state valued within 1e-4 of the way to the floor
-// b.low < 0, the value of a loop that never ends (no end expected within ~9 discount time constants,
-// e^-9.2 = 1e-4). Nothing there is learned any more: every TD error of a step that stays at the floor
-// is 0, so an actor saturated on the loop (pushing into a wall) kept it for good while states that
-// lead out went untried (docs/algorithm.md, "A changing world: hopeless states explore"). Such a
-// state chooses uniformly; -infinity when the rewards allow no floor below 0.
+// b.low < 0, the worst any policy can do: the worst step reward for ever (then no end is expected
+// within ~9 discount time constants, e^-9.2 = 1e-4), or the worst final reward now. Nothing there is
+// learned any more: every TD error of a step that stays at the floor is 0, so an actor saturated on
+// a loop (pushing into a wall) kept it for good while states that lead out went untried
+// (docs/algorithm.md, "A changing world: hopeless states explore"). Such a state chooses uniformly;
+// -infinity when the rewards allow no floor below 0.
 inline float hopelessValue(ValueBounds b) {
     return b.low < 0.0f ? b.low * (1.0f - 1e-4f) : -std::numeric_limits<float>::infinity();
 }
