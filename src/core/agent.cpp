@@ -224,13 +224,14 @@ std::uint32_t Agent::update(float reward, ObservationView obs, float dt, ActionM
     // Plan from the state just reached, before acting, so the action already uses what it taught.
     if (plans) s.plan(k);
 
-    // A learning agent explores a state it values at the floor (core::hopelessValue); a greedy or
-    // frozen one plays its policy.
-    const float hopeless = s.learning ? core::hopelessValue(k.values) : -std::numeric_limits<float>::infinity();
+    // A learning agent that samples explores a state it values at the floor (core::hopelessValue); a
+    // greedy or frozen one plays its policy.
+    const bool samples = s.selection == ActionSelection::Sample;
+    const float hopeless = s.learning && samples ? core::hopelessValue(k.values) : -std::numeric_limits<float>::infinity();
     const std::uint32_t action = s.td.chooseAction(s.weights, s.current, s.rng, s.probabilities, s.latestValue,
-                                                   mask.allowed, s.selection == ActionSelection::Greedy, hopeless);
+                                                   mask.allowed, !samples, hopeless);
     s.stats.value = core::bounded(s.latestValue, k.values);
-    s.recordProbabilities(mask.allowed, s.selection == ActionSelection::Sample && s.latestValue <= hopeless);
+    s.recordProbabilities(mask.allowed, s.latestValue <= hopeless);
     if (s.learning && s.learnsFromRealSteps()) s.td.mark(s.current, action, s.rep.featureCount());
 
     std::swap(s.previous, s.current);

@@ -22,6 +22,13 @@ void requireSize(std::size_t actual, std::size_t expected, const char* what) {
     }
 }
 
+// A reward range a save may hold: the rewards learned from lie in [-1, 1] and the range includes 0.
+void requireRewardRange(float low, float high, const char* which) {
+    if (!(low >= -1.0f && low <= 0.0f && high >= 0.0f && high <= 1.0f)) {
+        corrupt(std::string("the ") + which + " must satisfy -1 <= low <= 0 <= high <= 1");
+    }
+}
+
 }  // namespace
 
 std::unique_ptr<Agent::Impl> restoreAgent(const AgentSnapshot& snap) {
@@ -63,13 +70,8 @@ std::unique_ptr<Agent::Impl> restoreAgent(const AgentSnapshot& snap) {
     if (snap.descriptor.allocation == RbfAllocation::Full) s.rep.finishLattice();  // as it was made
     s.weights.resize(static_cast<std::uint32_t>(count));
     s.weights.data() = snap.weights;
-    if (!(snap.rewardLow >= -1.0f && snap.rewardLow <= 0.0f && snap.rewardHigh >= 0.0f && snap.rewardHigh <= 1.0f)) {
-        corrupt("the reward range must satisfy -1 <= low <= 0 <= high <= 1");
-    }
-    if (!(snap.finalRewardLow >= -1.0f && snap.finalRewardLow <= 0.0f && snap.finalRewardHigh >= 0.0f &&
-          snap.finalRewardHigh <= 1.0f)) {
-        corrupt("the final reward range must satisfy -1 <= low <= 0 <= high <= 1");
-    }
+    requireRewardRange(snap.rewardLow, snap.rewardHigh, "reward range");
+    requireRewardRange(snap.finalRewardLow, snap.finalRewardHigh, "final reward range");
     s.brain->rewards = core::RewardRange{snap.rewardLow, snap.rewardHigh, snap.finalRewardLow, snap.finalRewardHigh};
     s.brain->modelPredictsChange = snap.modelPredictsChange;
 

@@ -11,6 +11,13 @@ namespace {
 
 [[noreturn]] void fail(const std::string& message) { throw Error(ErrorCode::Format, message); }
 
+// The rewards learned from lie in [-1, 1] and a range includes 0.
+void checkRewardRange(float low, float high, const char* which) {
+    if (!(low >= -1.0f && low <= 0.0f && high >= 0.0f && high <= 1.0f)) {
+        fail(std::string("the ") + which + " is not -1 <= low <= 0 <= high <= 1");
+    }
+}
+
 void requireSize(const char* field, std::size_t actual, std::size_t expected, const char* why) {
     if (actual != expected) {
         fail(std::string(field) + " holds " + std::to_string(actual) + " values, expected " +
@@ -133,12 +140,8 @@ void checkSnapshot(const AgentSnapshot& s) {
     }
     if (!(std::isfinite(s.lastDt) && s.lastDt > 0.0f)) fail("lastDt is not a finite number > 0");
     if (!(std::isfinite(s.modelError) && s.modelError >= 0.0f)) fail("modelError is not a finite number >= 0");
-    if (!(s.rewardLow >= -1.0f && s.rewardLow <= 0.0f && s.rewardHigh >= 0.0f && s.rewardHigh <= 1.0f)) {
-        fail("the reward range is not -1 <= low <= 0 <= high <= 1");
-    }
-    if (!(s.finalRewardLow >= -1.0f && s.finalRewardLow <= 0.0f && s.finalRewardHigh >= 0.0f && s.finalRewardHigh <= 1.0f)) {
-        fail("the final reward range is not -1 <= low <= 0 <= high <= 1");
-    }
+    checkRewardRange(s.rewardLow, s.rewardHigh, "reward range");
+    checkRewardRange(s.finalRewardLow, s.finalRewardHigh, "final reward range");
 }
 
 }  // namespace verve::io

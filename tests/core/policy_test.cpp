@@ -123,9 +123,9 @@ AgentSnapshot saturatedAtTheFloor(float rewardLow) {
 }
 
 // Counts each action chosen over `n` updates in `state`, rewarded `reward` each step.
-std::vector<int> choices(Agent& agent, std::int32_t state, float reward, int n) {
+std::vector<int> choices(Agent& agent, std::int32_t state, float reward, int n, ActionMask mask = {}) {
     std::vector<int> count(3, 0);
-    for (int i = 0; i < n; ++i) ++count[agent.update(reward, discreteObs(state), 0.1f)];
+    for (int i = 0; i < n; ++i) ++count[agent.update(reward, discreteObs(state).view(), 0.1f, mask)];
     return count;
 }
 
@@ -158,10 +158,7 @@ TEST(HopelessStates, ExploreUniformlyWhileLearningAndSampling) {
     // With an action mask, uniformly among the allowed actions.
     Agent masked(s);
     const std::uint8_t allowed[3] = {0, 1, 1};
-    std::vector<int> maskedCount(3, 0);
-    for (int i = 0; i < 400; ++i) {
-        ++maskedCount[masked.update(-1.0f, discreteObs(0).view(), 0.1f, ActionMask{allowed, 3})];
-    }
+    const std::vector<int> maskedCount = choices(masked, 0, -1.0f, 400, ActionMask{allowed, 3});
     EXPECT_EQ(maskedCount[0], 0);
     EXPECT_GT(maskedCount[1], 150);
     EXPECT_GT(maskedCount[2], 150);
