@@ -5,6 +5,7 @@
 
 #include "core/agent_impl.hpp"
 #include "core/observation_check.hpp"
+#include "core/prefetch.hpp"
 #include "core/warnings.hpp"
 
 namespace verve {
@@ -126,6 +127,26 @@ void Agent::Impl::recordProbabilities(const std::uint8_t* allowed, bool uniform)
         count += probabilities[a];
     }
     for (float& p : probabilities) p /= count;
+}
+
+void Agent::Impl::prefetch(unsigned stage) const noexcept {
+    if (stage == 0) {
+        // Every member before the planning state: what an update reads.
+        core::prefetchBytes(this, static_cast<std::size_t>(reinterpret_cast<const char*>(&model) - reinterpret_cast<const char*>(this)));
+    } else if (stage == 1) {
+        core::prefetchBytes(brain.get(), sizeof(BrainState));
+        core::prefetchData(previous);
+        core::prefetchBytes(current.data(), current.capacity() * sizeof(core::ActiveFeature));
+        core::prefetchData(previousContinuous);
+        core::prefetchData(normalized);
+        core::prefetchData(probabilities);
+        td.prefetch();
+    } else if (stage == 2) {
+        core::prefetchData(weights.data());
+        rep.prefetchLookup(0);
+    } else {
+        rep.prefetchLookup(stage - 2);
+    }
 }
 
 void Agent::Impl::reserveFor(std::uint32_t features, std::size_t active) {

@@ -50,6 +50,11 @@ struct Agent::Impl {
     // probabilities: chooseAction's activations, divided by their sum (uniform over the allowed
     // actions if all underflowed, or if `uniform`: the choice ignored them).
     void recordProbabilities(const std::uint8_t* allowed, bool uniform);
+    // A crowd's batch asks for the memory of the agents it updates next (batch.cpp), in stages:
+    // stage s + 1 follows only pointers that stage s asked for (this, then the brain and the
+    // short-term memory, then the weights and the representation's chain). A hint: no effect.
+    static constexpr unsigned kPrefetchStages = 2 + core::StateRepresentation::kPrefetchStages;
+    void prefetch(unsigned stage) const noexcept;
     static constexpr float kModelErrorAveraging = 0.05f;  // stats.modelError: ~20-step running mean
     bool learnsFromRealSteps() const { return !desc.planning || desc.learnFromRealSteps; }
 

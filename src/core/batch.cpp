@@ -82,27 +82,33 @@ std::uint32_t Batch::workerCount() const { return impl_->options.workerCount; }
 
 void Batch::Impl::updateGroups(std::uint32_t begin, std::uint32_t end) noexcept {
     const BatchStep& s = *step;
-    for (std::uint32_t g = begin; g < end; ++g) {
-        for (std::uint32_t k = groupStart[g]; k < groupStart[g + 1]; ++k) {
-            const std::uint32_t i = order[k];
-            ErrorCode code = ErrorCode::Internal;
-            const char* what = "unknown exception";
-            try {
-                s.actions[i] = s.agents[i]->update(s.rewards[i], views[i], s.dt);
-                continue;
-            } catch (const Error& e) {
-                code = e.code();
-                failure.record(i, code, e.what());
-            } catch (const std::bad_alloc&) {
-                code = ErrorCode::OutOfMemory;
-                failure.record(i, code, "out of memory");
-            } catch (const std::exception& e) {
-                failure.record(i, code, e.what());
-            } catch (...) {
-                failure.record(i, code, what);
-            }
-            if (s.results != nullptr) s.results[i] = static_cast<int>(code);
+    // The groups' agents lie together in `order`, each group in its update order.
+    const std::uint32_t first = groupStart[begin], last = groupStart[end];
+    constexpr unsigned kStages = Agent::Impl::kPrefetchStages;
+    for (std::uint32_t k = first; k < last; ++k) {
+        // Stage st of the agent kStages - st places ahead: by the time an agent is updated, every
+        // link of its chain was asked for one update earlier than the next one needed it.
+        for (unsigned st = 0; st < kStages; ++st) {
+            if (k + kStages - st < last) s.agents[order[k + kStages - st]]->impl_->prefetch(st);
         }
+        const std::uint32_t i = order[k];
+        ErrorCode code = ErrorCode::Internal;
+        const char* what = "unknown exception";
+        try {
+            s.actions[i] = s.agents[i]->update(s.rewards[i], views[i], s.dt);
+            continue;
+        } catch (const Error& e) {
+            code = e.code();
+            failure.record(i, code, e.what());
+        } catch (const std::bad_alloc&) {
+            code = ErrorCode::OutOfMemory;
+            failure.record(i, code, "out of memory");
+        } catch (const std::exception& e) {
+            failure.record(i, code, e.what());
+        } catch (...) {
+            failure.record(i, code, what);
+        }
+        if (s.results != nullptr) s.results[i] = static_cast<int>(code);
     }
 }
 

@@ -4,6 +4,7 @@
 #include <cmath>
 #include <cstring>
 
+#include "core/prefetch.hpp"
 #include "verve/error.hpp"
 
 namespace verve::core {
@@ -388,6 +389,23 @@ bool StateRepresentation::find(const std::int32_t* discrete, const float* contin
     }
     if (boxes) judgeBoxes();
     return nearOne;
+}
+
+void StateRepresentation::prefetchLookup(unsigned stage) const noexcept {
+    if (keyCount_ != 1 || arrays_.empty()) return;
+    const Array& array = arrays_.begin()->second;
+    if (stage == 0) {
+        prefetchBytes(&array, sizeof(array));
+        return;
+    }
+    if (array.cells.size() != 1) return;
+    const Cell& cell = array.cells.begin()->second;
+    if (stage == 1) {
+        prefetchBytes(&cell, sizeof(cell));
+    } else {
+        prefetchData(cell.centres);
+        if (!cell.consecutive) prefetchData(cell.features);
+    }
 }
 
 void StateRepresentation::judgeBoxes() const {

@@ -50,6 +50,12 @@ public:
     // Every feature's discrete key and centre (numContinuous values), by feature index. Not for
     // the hot path: the grid cells hold the only copy of a centre, so this walks all of them.
     void features(std::vector<std::uint64_t>& keys, std::vector<float>& centres) const;
+    // A batch's staged prefetch of the next lookup (Agent::Impl::prefetch), for a representation
+    // of one array of one cell (every dynamic agent below resolution 16 without discrete sensors):
+    // stage 0 asks for the array, 1 for its cell, 2 for the cell's centres; each stage reads only
+    // what the one before asked for. Other representations ask for nothing.
+    static constexpr unsigned kPrefetchStages = 3;
+    void prefetchLookup(unsigned stage) const noexcept;
 
     // Divides the learning rates: the expected activation sum of a lattice of RBFs,
     // sqrt(2 pi) ~ 2.5 per continuous dimension, and 1 when all sensors are discrete.

@@ -1,5 +1,7 @@
 #include "core/td_learner.hpp"
 
+#include "core/prefetch.hpp"
+
 #include <algorithm>
 #include <cmath>
 
@@ -159,6 +161,11 @@ void TdLearner::restore(const std::vector<std::uint32_t>& features, const std::v
         std::copy_n(traces.data() + i * stride_, stride_, trace(features[i]));
         live_[liveCount_++] = features[i];
     }
+}
+
+void TdLearner::prefetch() const noexcept {
+    prefetchBytes(live_.data(), std::size_t(liveCount_) * sizeof(std::uint32_t));
+    prefetchData(traces_);
 }
 
 }  // namespace verve::core

@@ -106,6 +106,9 @@ public:
     // trainAndDecay() then allocate nothing. Scratch follows what is marked, not the feature count.
     void reserve(std::uint32_t features, std::size_t active);
 
+    // A batch's prefetch (Agent::Impl::prefetch): the live list, and the traces when they are few.
+    void prefetch() const noexcept;
+
     std::uint32_t liveCount() const { return liveCount_; }
     std::uint32_t traceStride() const { return stride_; }
     std::vector<std::uint32_t> liveFeatures() const;
