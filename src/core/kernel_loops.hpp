@@ -6,6 +6,7 @@
 #include <cstdint>
 
 #include "core/kernels.hpp"
+#include "core/prefetch.hpp"
 
 namespace verve::core {
 
@@ -27,8 +28,8 @@ std::uint32_t trainDecayRows(const TraceStep& s, float* __restrict weights, floa
     for (std::uint32_t i = 0; i < count; ++i) {
         const std::uint32_t feature = live[i];
         if (i + kAhead < count) {
-            __builtin_prefetch(traces + std::size_t(live[i + kAhead]) * stride, 1);
-            __builtin_prefetch(weights + std::size_t(live[i + kAhead]) * weightStride, 1);
+            prefetchLineForWrite(traces + std::size_t(live[i + kAhead]) * stride);
+            prefetchLineForWrite(weights + std::size_t(live[i + kAhead]) * weightStride);
         }
         float* __restrict w = weights + feature * weightStride;
         float* __restrict e = traces + std::size_t(feature) * stride;

@@ -8,13 +8,17 @@ namespace verve::core {
 
 constexpr std::size_t kCacheLine = 64;
 
+// One cache line, to be read or to be written.
+inline void prefetchLine(const void* p) noexcept { __builtin_prefetch(p, 0); }
+inline void prefetchLineForWrite(const void* p) noexcept { __builtin_prefetch(p, 1); }
+
 // The cache lines of [p, p + bytes), at most maxLines of them (the first ones: the hardware
 // prefetcher follows a stream once it has begun).
 inline void prefetchBytes(const void* p, std::size_t bytes, std::size_t maxLines = 16) noexcept {
     const char* c = static_cast<const char*>(p);
     if (c == nullptr) return;
     const std::size_t lines = (bytes + kCacheLine - 1) / kCacheLine;
-    for (std::size_t i = 0; i < lines && i < maxLines; ++i) __builtin_prefetch(c + i * kCacheLine);
+    for (std::size_t i = 0; i < lines && i < maxLines; ++i) prefetchLine(c + i * kCacheLine);
 }
 
 template <typename Vector>

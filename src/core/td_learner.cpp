@@ -1,9 +1,9 @@
 #include "core/td_learner.hpp"
 
-#include "core/prefetch.hpp"
-
 #include <algorithm>
 #include <cmath>
+
+#include "core/prefetch.hpp"
 
 namespace verve::core {
 

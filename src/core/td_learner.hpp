@@ -106,7 +106,8 @@ public:
     // trainAndDecay() then allocate nothing. Scratch follows what is marked, not the feature count.
     void reserve(std::uint32_t features, std::size_t active);
 
-    // A batch's prefetch (Agent::Impl::prefetch): the live list, and the traces when they are few.
+    // A batch's prefetch (Agent::Impl::prefetch): the live list and the first lines of the traces
+    // (all of a small agent's).
     void prefetch() const noexcept;
 
     std::uint32_t liveCount() const { return liveCount_; }
