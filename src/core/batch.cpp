@@ -86,8 +86,9 @@ void Batch::Impl::updateGroups(std::uint32_t begin, std::uint32_t end) noexcept 
     const std::uint32_t first = groupStart[begin], last = groupStart[end];
     constexpr unsigned kStages = Agent::Impl::kPrefetchStages;
     for (std::uint32_t k = first; k < last; ++k) {
-        // Stage st of the agent kStages - st places ahead: by the time an agent is updated, every
-        // link of its chain was asked for one update earlier than the next one needed it.
+        // Stage st for the agent kStages - st places ahead: each link of an agent's chain of
+        // pointers is asked for a whole update before the stage that reads it, and all of them
+        // before the agent's own update.
         for (unsigned st = 0; st < kStages; ++st) {
             if (k + kStages - st < last) s.agents[order[k + kStages - st]]->impl_->prefetch(st);
         }
