@@ -149,6 +149,15 @@ void Agent::Impl::prefetch(unsigned stage) const noexcept {
     }
 }
 
+void Agent::Impl::prefetchCheck(unsigned stage) const noexcept {
+    if (stage == 0) {
+        core::prefetchBytes(this, sizeof(brain) + sizeof(&desc));
+    } else {
+        const auto* b = reinterpret_cast<const char*>(brain.get());
+        core::prefetchBytes(b, static_cast<std::size_t>(reinterpret_cast<const char*>(&brain->desc + 1) - b));
+    }
+}
+
 void Agent::Impl::reserveFor(std::uint32_t features, std::size_t active) {
     // The lookup has filled `current` already (allocating, if at all, before any change), and
     // `previous` only ever swaps buffers with it: scratch follows the neighbourhood, not the RBFs.

@@ -55,6 +55,10 @@ struct Agent::Impl {
     // short-term memory, then the weights and the representation's chain). A hint: no effect.
     static constexpr unsigned kPrefetchStages = 2 + core::StateRepresentation::kPrefetchStages;
     void prefetch(unsigned stage) const noexcept;
+    // The same for a batch's check of every agent before its updates (batch.cpp), which reads the
+    // descriptor and writes the brain's batch token: stage 0 asks for the members that lead to the
+    // brain, stage 1 for the brain's lines up to the descriptor.
+    void prefetchCheck(unsigned stage) const noexcept;
     static constexpr float kModelErrorAveraging = 0.05f;  // stats.modelError: ~20-step running mean
     bool learnsFromRealSteps() const { return !desc.planning || desc.learnFromRealSteps; }
 

@@ -11,6 +11,7 @@
 
 #include "core/agent_impl.hpp"
 #include "core/observation_check.hpp"
+#include "core/prefetch.hpp"
 #include "core/worker_pool.hpp"
 
 namespace verve {
@@ -88,7 +89,8 @@ void Batch::Impl::updateGroups(std::uint32_t begin, std::uint32_t end) noexcept 
     for (std::uint32_t k = first; k < last; ++k) {
         // Stage st for the agent kStages - st places ahead: each link of an agent's chain of
         // pointers is asked for a whole update before the stage that reads it, and all of them
-        // before the agent's own update.
+        // before the agent's own update. The Agent, which leads to the rest, one update earlier.
+        if (k + kStages + 1 < last) core::prefetchLine(s.agents[order[k + kStages + 1]]);
         for (unsigned st = 0; st < kStages; ++st) {
             if (k + kStages - st < last) s.agents[order[k + kStages - st]]->impl_->prefetch(st);
         }
@@ -147,7 +149,14 @@ void Batch::update(const BatchStep& s) {
     b.failure.index = SIZE_MAX;
     std::uint32_t groups = 0;
     std::size_t packedDiscrete = 0, packedContinuous = 0;
+    // The check reads little of each agent, so its links are asked for further ahead than the
+    // update's: the agent's members kCheckAhead agents ahead, its brain half as far.
+    constexpr std::size_t kCheckAhead = 16;
     for (std::size_t i = 0; i < s.count; ++i) {
+        for (unsigned st = 0; st < 2; ++st) {
+            const std::size_t ahead = i + kCheckAhead / (st + 1);
+            if (ahead < s.count && s.agents[ahead] != nullptr) s.agents[ahead]->impl_->prefetchCheck(st);
+        }
         int code = 0;
         try {
             if (s.agents[i] == nullptr) refuse("agent is NULL");
