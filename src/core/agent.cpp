@@ -151,7 +151,7 @@ void Agent::Impl::prefetch(unsigned stage) const noexcept {
 
 void Agent::Impl::prefetchCheck(unsigned stage) const noexcept {
     if (stage == 0) {
-        core::prefetchBytes(this, sizeof(brain) + sizeof(&desc));
+        core::prefetchBytes(this, sizeof(brain) + sizeof(&desc));  // the first members
     } else {
         const auto* b = reinterpret_cast<const char*>(brain.get());
         core::prefetchBytes(b, static_cast<std::size_t>(reinterpret_cast<const char*>(&brain->desc + 1) - b));
