@@ -4,13 +4,21 @@
 
 const godot_gdnative_core_api_struct* vg_core = NULL;
 const godot_gdnative_ext_nativescript_api_struct* vg_ns = NULL;
+const godot_gdnative_core_1_1_api_struct* vg_core11 = NULL;
 const godot_gdnative_ext_nativescript_1_1_api_struct* vg_ns11 = NULL;
+static godot_object* vg_library = NULL;
 
-int vg_api_init(const godot_gdnative_core_api_struct* core) {
+int vg_api_init(const godot_gdnative_core_api_struct* core, godot_object* library) {
+    const godot_gdnative_api_struct* next;
     unsigned int i;
     vg_core = core;
+    vg_core11 = NULL;
     vg_ns = NULL;
     vg_ns11 = NULL;
+    vg_library = library;
+    for (next = core->next; next; next = next->next)
+        if (next->version.major == 1 && next->version.minor == 1)
+            vg_core11 = (const godot_gdnative_core_1_1_api_struct*)next;
     for (i = 0; i < core->num_extensions; ++i) {
         const godot_gdnative_api_struct* ext = core->extensions[i];
         if (ext->type != GDNATIVE_EXT_NATIVESCRIPT) continue;
@@ -21,6 +29,46 @@ int vg_api_init(const godot_gdnative_core_api_struct* core) {
                 vg_ns11 = (const godot_gdnative_ext_nativescript_1_1_api_struct*)ext;
     }
     return vg_ns != NULL;
+}
+
+/* object.method(arg) through the engine's variant call (it converts the argument); 0 on failure. */
+static int vg_call_method(const char* class_name, const char* method, godot_object* object, const godot_variant* arg) {
+    godot_method_bind* bind = vg_core->godot_method_bind_get_method(class_name, method);
+    const godot_variant* args[1];
+    godot_variant_call_error error;
+    godot_variant result;
+    if (!bind) return 0;
+    args[0] = arg;
+    result = vg_core->godot_method_bind_call(bind, object, args, 1, &error);
+    vg_core->godot_variant_destroy(&result);
+    return error.error == GODOT_CALL_ERROR_CALL_OK;
+}
+
+/* As godot-cpp's T::_new(): a NativeScript naming the class in our library, set on a new Reference. */
+godot_variant vg_new_instance(const char* class_name, void** instance) {
+    godot_class_constructor new_script = vg_core->godot_get_class_constructor("NativeScript");
+    godot_class_constructor new_reference = vg_core->godot_get_class_constructor("Reference");
+    godot_variant script, library, name, out;
+    godot_object* object;
+    int ok;
+    *instance = NULL;
+    if (!new_script || !new_reference || !vg_library) return vg_variant_nil();
+    /* Each object goes into a variant at once: the variants hold the references that free them. */
+    vg_core->godot_variant_new_object(&script, new_script());
+    vg_core->godot_variant_new_object(&library, vg_library);
+    name = vg_variant_string(class_name);
+    object = new_reference();
+    vg_core->godot_variant_new_object(&out, object);
+    ok = vg_call_method("NativeScript", "set_library", vg_core->godot_variant_as_object(&script), &library) &&
+         vg_call_method("NativeScript", "set_class_name", vg_core->godot_variant_as_object(&script), &name) &&
+         vg_call_method("Object", "set_script", object, &script);
+    vg_core->godot_variant_destroy(&name);
+    vg_core->godot_variant_destroy(&library);
+    vg_core->godot_variant_destroy(&script);
+    if (ok) *instance = vg_ns->godot_nativescript_get_userdata(object);
+    if (*instance) return out;
+    vg_core->godot_variant_destroy(&out);
+    return vg_variant_nil();
 }
 
 void vg_print_error(const char* function, const char* message) {

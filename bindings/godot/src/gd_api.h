@@ -15,10 +15,17 @@
 
 extern const godot_gdnative_core_api_struct* vg_core;
 extern const godot_gdnative_ext_nativescript_api_struct* vg_ns;
+extern const godot_gdnative_core_1_1_api_struct* vg_core11;            /* NULL before Godot 3.1 */
 extern const godot_gdnative_ext_nativescript_1_1_api_struct* vg_ns11; /* NULL before NativeScript 1.1 */
 
-/* Finds the NativeScript extension; 0 when the engine has none (nothing can be registered). */
-int vg_api_init(const godot_gdnative_core_api_struct* core);
+/* Finds the NativeScript extension; 0 when the engine has none (nothing can be registered).
+ * `library` is the GDNativeLibrary being loaded: new instances of our classes need it. */
+int vg_api_init(const godot_gdnative_core_api_struct* core, godot_object* library);
+
+/* A new instance of this library's class `class_name` (a Reference), as GDScript's
+ * preload("....gdns").new() makes it; *instance is its instance data. Null (and *instance NULL)
+ * when the engine could not make one. */
+godot_variant vg_new_instance(const char* class_name, void** instance);
 
 /* Prints an error the way GDScript's push_error does (the editor's debugger lists it too). */
 void vg_print_error(const char* function, const char* message);

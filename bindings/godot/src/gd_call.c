@@ -6,14 +6,20 @@
 #include <stdio.h>
 #include <string.h>
 
-int vg_begin(vg_call* c, vg_agent* self, const char* method, int argc, godot_variant** argv, int min_args,
-             int max_args) {
-    c->self = self;
+const char vg_agent_class[] = "VerveAgent";
+const char vg_brain_class[] = "VerveBrain";
+const char vg_batch_class[] = "VerveBatch";
+
+int vg_begin_class(vg_call* c, const char* class_name, char* last_error, const char* method, int argc,
+                   godot_variant** argv, int min_args, int max_args) {
+    c->class_name = class_name;
+    c->last_error = last_error;
+    c->self = NULL;
     c->method = method;
     c->argc = argc;
     c->argv = argv;
-    if (self) self->last_error[0] = '\0';
-    if (!self) return vg_fail(c, "no VerveAgent instance (was the script attached to another object?)");
+    if (last_error) last_error[0] = '\0';
+    if (!last_error) return vg_fail(c, "no %s instance (was the script attached to another object?)", class_name);
     if (argc < min_args || argc > max_args) {
         if (min_args == max_args) return vg_fail(c, "takes %d arguments (got %d)", min_args, argc);
         return vg_fail(c, "takes %d to %d arguments (got %d)", min_args, max_args, argc);
@@ -21,17 +27,24 @@ int vg_begin(vg_call* c, vg_agent* self, const char* method, int argc, godot_var
     return 1;
 }
 
+int vg_begin(vg_call* c, vg_agent* self, const char* method, int argc, godot_variant** argv, int min_args,
+             int max_args) {
+    int ok = vg_begin_class(c, vg_agent_class, self ? self->last_error : NULL, method, argc, argv, min_args, max_args);
+    c->self = self;
+    return ok;
+}
+
 int vg_fail(vg_call* c, const char* format, ...) {
     char full[VG_ERROR_SIZE];
     char function[64];
-    int prefix = snprintf(full, sizeof full, "VerveAgent.%s: ", c->method);
+    int prefix = snprintf(full, sizeof full, "%s.%s: ", c->class_name, c->method);
     va_list args;
     if (prefix < 0 || (size_t)prefix >= sizeof full) prefix = 0;
     va_start(args, format);
     vsnprintf(full + prefix, sizeof full - (size_t)prefix, format, args);
     va_end(args);
-    if (c->self) memcpy(c->self->last_error, full, sizeof full);
-    snprintf(function, sizeof function, "VerveAgent.%s", c->method);
+    if (c->last_error) memcpy(c->last_error, full, sizeof full);
+    snprintf(function, sizeof function, "%s.%s", c->class_name, c->method);
     vg_print_error(function, full + prefix); /* Godot prints "ERROR: <function>: <message>" */
     return 0;
 }
@@ -140,6 +153,56 @@ int vg_read_ints(vg_call* c, const godot_variant* v, const char* name, int32_t* 
 
 int vg_read_floats(vg_call* c, const godot_variant* v, const char* name, float* out, uint32_t max, uint32_t* n) {
     return vg_read_list(c, v, name, GODOT_VARIANT_TYPE_POOL_REAL_ARRAY, max, n, vg_float_element, out);
+}
+
+/* v's object when it is a live one, else NULL. */
+static godot_object* vg_live_object(const godot_variant* v) {
+    godot_object* object;
+    if (!vg_core11 || vg_core->godot_variant_get_type(v) != GODOT_VARIANT_TYPE_OBJECT) return NULL;
+    object = vg_core->godot_variant_as_object(v);
+    /* A variant may still point at a freed Node: the object database is asked before it is touched. */
+    return object && vg_core11->godot_is_instance_valid(object) ? object : NULL;
+}
+
+void* vg_instance_of(const godot_variant* v, const char* class_tag) {
+    godot_object* object = vg_live_object(v);
+    if (!object || !vg_ns11 || vg_ns11->godot_nativescript_get_type_tag(object) != (const void*)class_tag) return NULL;
+    return vg_ns->godot_nativescript_get_userdata(object);
+}
+
+const char* vg_describe(const godot_variant* v) {
+    godot_object* object = vg_live_object(v);
+    const void* tag;
+    if (vg_core->godot_variant_get_type(v) != GODOT_VARIANT_TYPE_OBJECT) return vg_type_name(v);
+    if (!object) return vg_core->godot_variant_as_object(v) ? "a freed object" : "null";
+    tag = vg_ns11 ? vg_ns11->godot_nativescript_get_type_tag(object) : NULL;
+    if (tag == (const void*)vg_agent_class) return "a VerveAgent"; /* not asked for: it would have matched */
+    if (tag == (const void*)vg_brain_class) return "a VerveBrain";
+    if (tag == (const void*)vg_batch_class) return "a VerveBatch";
+    return "an object of another class or library";
+}
+
+godot_variant vg_save_to_bytes(vg_call* c, vg_save_memory_fn save, const void* object) {
+    size_t size = 0;
+    godot_pool_byte_array bytes;
+    godot_pool_byte_array_write_access* write;
+    godot_variant out;
+    int ok;
+    if (!vg_check(c, save(object, NULL, &size))) return vg_variant_nil();
+    if (size > (size_t)INT32_MAX) {
+        vg_fail(c, "the save needs %lu bytes, more than a PoolByteArray holds", (unsigned long)size);
+        return vg_variant_nil();
+    }
+    vg_core->godot_pool_byte_array_new(&bytes);
+    vg_core->godot_pool_byte_array_resize(&bytes, (godot_int)size);
+    write = vg_core->godot_pool_byte_array_write(&bytes);
+    ok = vg_check(c, save(object, vg_core->godot_pool_byte_array_write_access_ptr(write), &size));
+    vg_core->godot_pool_byte_array_write_access_destroy(write);
+    if (ok) vg_core->godot_pool_byte_array_resize(&bytes, (godot_int)size);
+    if (ok) vg_core->godot_variant_new_pool_byte_array(&out, &bytes);
+    else out = vg_variant_nil();
+    vg_core->godot_pool_byte_array_destroy(&bytes);
+    return out;
 }
 
 int vg_string_is(const godot_variant* v, const char* text) {

@@ -1,6 +1,7 @@
-/* gd_call.h - one call from GDScript into a VerveAgent method: its arguments, read and checked,
- * and its error, printed as a Godot error and kept for VerveAgent.get_last_error(). Every reader
- * returns 0 after reporting what was wrong, so a method can stop at the first failure. */
+/* gd_call.h - one call from GDScript into a method of VerveAgent, VerveBrain or VerveBatch: its
+ * arguments, read and checked, and its error, printed as a Godot error and kept for the instance's
+ * get_last_error(). Every reader returns 0 after reporting what was wrong, so a method can stop at
+ * the first failure. */
 #ifndef VERVE_GD_CALL_H
 #define VERVE_GD_CALL_H
 
@@ -13,22 +14,34 @@
 
 #define VG_ERROR_SIZE 512
 
+/* The class names. Their addresses are also the classes' NativeScript type tags: unique to this
+ * library, so an object of a same-named class from another library is told apart. */
+extern const char vg_agent_class[]; /* "VerveAgent" */
+extern const char vg_brain_class[]; /* "VerveBrain" */
+extern const char vg_batch_class[]; /* "VerveBatch" */
+
 typedef struct vg_agent {
     verve_agent* handle;            /* NULL before create()/load() and after close() */
     char last_error[VG_ERROR_SIZE]; /* "" after a call that succeeded */
 } vg_agent;
 
 typedef struct vg_call {
-    vg_agent* self;
+    const char* class_name; /* the errors' prefix */
+    char* last_error;       /* the instance's, NULL when there is no instance */
+    vg_agent* self;         /* VerveAgent methods only */
     const char* method;
     int argc;
     godot_variant** argv;
 } vg_call;
 
-/* Starts a call: clears the last error and checks the argument count. */
+/* Starts a call on an instance of class_name whose last error is last_error (NULL: the script is
+ * on an object without our instance data): clears the error and checks the argument count. */
+int vg_begin_class(vg_call* c, const char* class_name, char* last_error, const char* method, int argc,
+                   godot_variant** argv, int min_args, int max_args);
+/* vg_begin_class for a VerveAgent method. */
 int vg_begin(vg_call* c, vg_agent* self, const char* method, int argc, godot_variant** argv, int min_args,
              int max_args);
-/* Reports "VerveAgent.<method>: <message>". Returns 0. */
+/* Reports "<class>.<method>: <message>". Returns 0. */
 int vg_fail(vg_call* c, const char* format, ...);
 /* Reports the library's message when r is not VERVE_OK; returns r == VERVE_OK. */
 int vg_check(vg_call* c, verve_result r);
@@ -45,6 +58,18 @@ int vg_arg_type(vg_call* c, int i, const char* name, godot_variant_type type);
 int vg_read_ints(vg_call* c, const godot_variant* v, const char* name, int32_t* out, uint32_t max, uint32_t* n);
 /* A PoolRealArray, an Array of numbers or null (no values) into out[max]. */
 int vg_read_floats(vg_call* c, const godot_variant* v, const char* name, float* out, uint32_t max, uint32_t* n);
+
+/* The instance data of v when v is an object of this library's class `class_tag` (one of the
+ * vg_*_class names), else NULL: null, a non-object, a freed object, an object of another class or
+ * of another library's class of the same name. Type-safe by NativeScript 1.1's type tags. */
+void* vg_instance_of(const godot_variant* v, const char* class_tag);
+/* What v is, for an error: vg_type_name, or for an object "a freed object" or our class's name. */
+const char* vg_describe(const godot_variant* v);
+
+/* A save to memory (verve_agent_save_memory and its kin, the object cast away) as a PoolByteArray
+ * variant, by the two-call pattern; null after reporting an error. */
+typedef verve_result (*vg_save_memory_fn)(const void* object, void* buffer, size_t* size);
+godot_variant vg_save_to_bytes(vg_call* c, vg_save_memory_fn save, const void* object);
 
 /* Finds each of `count` names in dict: values[i] is its value, NULL when absent (valid while dict
  * lives). The names are the first member (const char*) of `count` table entries `stride` bytes

@@ -15,6 +15,10 @@
     godot_variant vg_##name(godot_object* object, void* method_data, void* user_data, int argc, godot_variant** argv)
 #define VG_UNUSED (void)object, (void)method_data
 
+void vg_agent_destroy(void* instance) {
+    verve_agent_destroy(((vg_agent*)instance)->handle);
+}
+
 /* Replaces the agent held by self with `fresh` (the old one, if any, is destroyed). */
 static void vg_adopt(vg_agent* self, verve_agent* fresh) {
     verve_agent_destroy(self->handle);
@@ -83,32 +87,16 @@ VG_METHOD(save) {
     return vg_variant_bool(ok);
 }
 
+static verve_result vg_agent_save_memory(const void* agent, void* buffer, size_t* size) {
+    return verve_agent_save_memory((const verve_agent*)agent, buffer, size);
+}
+
 VG_METHOD(save_bytes) {
     vg_call c;
     verve_agent* a;
-    size_t size = 0;
-    godot_pool_byte_array bytes;
-    godot_pool_byte_array_write_access* write;
-    godot_variant out;
-    int ok;
     VG_UNUSED;
-    if (!vg_begin(&c, user_data, "save_bytes", argc, argv, 0, 0) || !vg_agent_handle(&c, &a) ||
-        !vg_check(&c, verve_agent_save_memory(a, NULL, &size)))
-        return vg_variant_nil();
-    if (size > (size_t)INT32_MAX) {
-        vg_fail(&c, "the save needs %lu bytes, more than a PoolByteArray holds", (unsigned long)size);
-        return vg_variant_nil();
-    }
-    vg_core->godot_pool_byte_array_new(&bytes);
-    vg_core->godot_pool_byte_array_resize(&bytes, (godot_int)size);
-    write = vg_core->godot_pool_byte_array_write(&bytes);
-    ok = vg_check(&c, verve_agent_save_memory(a, vg_core->godot_pool_byte_array_write_access_ptr(write), &size));
-    vg_core->godot_pool_byte_array_write_access_destroy(write);
-    if (ok) vg_core->godot_pool_byte_array_resize(&bytes, (godot_int)size);
-    if (ok) vg_core->godot_variant_new_pool_byte_array(&out, &bytes);
-    else out = vg_variant_nil();
-    vg_core->godot_pool_byte_array_destroy(&bytes);
-    return out;
+    if (!vg_begin(&c, user_data, "save_bytes", argc, argv, 0, 0) || !vg_agent_handle(&c, &a)) return vg_variant_nil();
+    return vg_save_to_bytes(&c, vg_agent_save_memory, a);
 }
 
 /* Most actions an agent may have (the library's limit): a mask is read onto the stack. */

@@ -4,6 +4,9 @@
 
 #include "gd_call.h"
 
+/* Frees the agent a VerveAgent instance holds (its destructor). */
+void vg_agent_destroy(void* instance);
+
 #define VG_DECLARE(name) \
     godot_variant vg_##name(godot_object* object, void* method_data, void* user_data, int argc, godot_variant** argv);
 VG_DECLARE(create)

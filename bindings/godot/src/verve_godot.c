@@ -1,10 +1,12 @@
 /* verve_godot.c - the GDNative entry points: Godot calls godot_gdnative_init when it loads the
- * library and godot_nativescript_init to learn its classes. One class, VerveAgent (a Reference:
- * freed, with its agent, when the last reference goes), whose methods are in
- * verve_agent_methods.c. */
+ * library and godot_nativescript_init to learn its classes. Three classes, each a Reference (freed,
+ * with what it holds, when the last reference goes): VerveAgent (verve_agent_methods.c),
+ * VerveBrain (verve_brain_methods.c) and VerveBatch (verve_batch_methods.c). */
 #include <stdlib.h>
 
 #include "verve_agent_methods.h"
+#include "verve_batch_methods.h"
+#include "verve_brain_methods.h"
 
 typedef godot_variant (*vg_method_fn)(godot_object*, void*, void*, int, godot_variant**);
 
@@ -13,7 +15,7 @@ typedef struct vg_arg_info {
     godot_variant_type type;
 } vg_arg_info;
 
-#define VG_MAX_ARGS 5 /* the most any method takes (update_masked) */
+#define VG_MAX_ARGS 5 /* the most any method takes (update_masked, VerveBatch.update) */
 
 typedef struct vg_method_info {
     const char* name;
@@ -24,7 +26,7 @@ typedef struct vg_method_info {
 } vg_method_info;
 
 #define VG_NIL GODOT_VARIANT_TYPE_NIL /* any type */
-static const vg_method_info vg_methods[] = {
+static const vg_method_info vg_agent_methods[] = {
     {"create", vg_create, "Creates the agent from an options Dictionary (missing keys: defaults). -> bool", 1,
      {{"options", GODOT_VARIANT_TYPE_DICTIONARY}}},
     {"load", vg_load, "Replaces the agent with one loaded from a save file (res://, user:// or a path). -> bool", 1,
@@ -80,21 +82,85 @@ static const vg_method_info vg_methods[] = {
     {"get_last_error", vg_get_last_error, "The error of the latest failed call, \"\" after a success. -> String", 0,
      {{0}}},
 };
-#define VG_METHOD_COUNT (sizeof vg_methods / sizeof vg_methods[0])
-#define VG_CLASS "VerveAgent"
+
+static const vg_method_info vg_brain_methods[] = {
+    {"create", vg_brain_create,
+     "Creates the brain from an options Dictionary, as VerveAgent.create() takes it. -> bool", 1,
+     {{"options", GODOT_VARIANT_TYPE_DICTIONARY}}},
+    {"load", vg_brain_load,
+     "Replaces the brain with one loaded from a brain's or an agent's save file, XML or binary. -> bool", 1,
+     {{"path", GODOT_VARIANT_TYPE_STRING}}},
+    {"load_bytes", vg_brain_load_bytes, "Replaces the brain with one loaded from save bytes, XML or binary. -> bool",
+     1, {{"data", GODOT_VARIANT_TYPE_POOL_BYTE_ARRAY}}},
+    {"save", vg_brain_save, "Saves the brain (an agent save without short-term memory), atomically. -> bool", 1,
+     {{"path", GODOT_VARIANT_TYPE_STRING}}},
+    {"save_binary", vg_brain_save_binary, "save() in the compact binary format. -> bool", 1,
+     {{"path", GODOT_VARIANT_TYPE_STRING}}},
+    {"save_bytes", vg_brain_save_bytes, "The brain's save as bytes (null on error). -> PoolByteArray", 0, {{0}}},
+    {"save_binary_bytes", vg_brain_save_binary_bytes, "save_bytes() in the compact binary format. -> PoolByteArray",
+     0, {{0}}},
+    {"create_body", vg_brain_create_body,
+     "A new VerveAgent over this brain: its own short-term memory, learning into the brain's weights; it keeps "
+     "the brain alive. -> VerveAgent (null on error)",
+     0, {{0}}},
+    {"get_rbf_count", vg_brain_get_rbf_count, "Radial basis functions the brain's bodies have created. -> int", 0,
+     {{0}}},
+    {"has_brain", vg_brain_has_brain, "Whether a brain was created or loaded (and not closed). -> bool", 0, {{0}}},
+    {"close", vg_brain_close, "Lets go of the brain now (its bodies keep it alive) instead of with the last reference.",
+     0, {{0}}},
+    {"get_last_error", vg_brain_get_last_error, "The error of the latest failed call, \"\" after a success. -> String",
+     0, {{0}}},
+};
+
+static const vg_method_info vg_batch_methods[] = {
+    {"create", vg_batch_create,
+     "Creates the batch with worker_count threads, the calling one included (0: one per hardware thread). -> bool",
+     1, {{"worker_count", GODOT_VARIANT_TYPE_INT}}},
+    {"update", vg_batch_update,
+     "One step of every agent, exactly as agents[i].update() in array order: rewards[i], the sensors packed agent "
+     "after agent (discrete may be null), dt. Any bad input changes no agent. -> PoolIntArray of actions (null on "
+     "error)",
+     5,
+     {{"agents", GODOT_VARIANT_TYPE_ARRAY},
+      {"rewards", GODOT_VARIANT_TYPE_POOL_REAL_ARRAY},
+      {"discrete", GODOT_VARIANT_TYPE_POOL_INT_ARRAY},
+      {"continuous", GODOT_VARIANT_TYPE_POOL_REAL_ARRAY},
+      {"dt", GODOT_VARIANT_TYPE_REAL}}},
+    {"get_worker_count", vg_batch_get_worker_count, "Threads an update uses, the calling one included. -> int", 0,
+     {{0}}},
+    {"has_batch", vg_batch_has_batch, "Whether create() succeeded (and close() was not called). -> bool", 0, {{0}}},
+    {"close", vg_batch_close, "Joins the batch's threads now instead of with the last reference.", 0, {{0}}},
+    {"get_last_error", vg_batch_get_last_error, "The error of the latest failed call, \"\" after a success. -> String",
+     0, {{0}}},
+};
+
+typedef struct vg_class_info {
+    const char* name; /* one of the vg_*_class names: its address is the class's type tag */
+    const vg_method_info* methods;
+    size_t method_count;
+    size_t instance_size; /* calloc'd per instance: no handle until create() or load() */
+    void (*destroy)(void* instance); /* frees what the instance holds */
+} vg_class_info;
+
+#define VG_COUNT(table) (sizeof table / sizeof table[0])
+static const vg_class_info vg_classes[] = {
+    {vg_agent_class, vg_agent_methods, VG_COUNT(vg_agent_methods), sizeof(vg_agent), vg_agent_destroy},
+    {vg_brain_class, vg_brain_methods, VG_COUNT(vg_brain_methods), sizeof(vg_brain), vg_brain_destroy},
+    {vg_batch_class, vg_batch_methods, VG_COUNT(vg_batch_methods), sizeof(vg_batch), vg_batch_destroy},
+};
 
 static void* vg_construct(godot_object* object, void* method_data) {
-    (void)object, (void)method_data;
-    return calloc(1, sizeof(vg_agent)); /* no agent until create() or load() */
+    (void)object;
+    return calloc(1, ((const vg_class_info*)method_data)->instance_size);
 }
 
 static void vg_destruct(godot_object* object, void* method_data, void* user_data) {
-    (void)object, (void)method_data;
-    if (user_data) verve_agent_destroy(((vg_agent*)user_data)->handle);
+    (void)object;
+    if (user_data) ((const vg_class_info*)method_data)->destroy(user_data);
     free(user_data);
 }
 
-static void vg_document(void* handle, const vg_method_info* m) {
+static void vg_document(void* handle, const char* class_name, const vg_method_info* m) {
     godot_method_arg args[VG_MAX_ARGS];
     godot_string doc;
     int i;
@@ -105,18 +171,33 @@ static void vg_document(void* handle, const vg_method_info* m) {
         args[i].hint = GODOT_PROPERTY_HINT_NONE;
         vg_core->godot_string_new(&args[i].hint_string);
     }
-    vg_ns11->godot_nativescript_set_method_argument_information(handle, VG_CLASS, m->name, m->argc, args);
+    vg_ns11->godot_nativescript_set_method_argument_information(handle, class_name, m->name, m->argc, args);
     for (i = 0; i < m->argc; ++i) {
         vg_core->godot_string_destroy(&args[i].name);
         vg_core->godot_string_destroy(&args[i].hint_string);
     }
     doc = vg_string(m->doc);
-    vg_ns11->godot_nativescript_set_method_documentation(handle, VG_CLASS, m->name, doc);
+    vg_ns11->godot_nativescript_set_method_documentation(handle, class_name, m->name, doc);
     vg_core->godot_string_destroy(&doc);
 }
 
+/* Registers one class: a Reference with its type tag, its methods and their documentation. */
+static void vg_register_class(void* handle, const vg_class_info* info) {
+    godot_instance_create_func create = {vg_construct, (void*)info, NULL};
+    godot_instance_destroy_func destroy = {vg_destruct, (void*)info, NULL};
+    godot_method_attributes attributes = {GODOT_METHOD_RPC_MODE_DISABLED};
+    size_t i;
+    vg_ns->godot_nativescript_register_class(handle, info->name, "Reference", create, destroy);
+    if (vg_ns11) vg_ns11->godot_nativescript_set_type_tag(handle, info->name, info->name);
+    for (i = 0; i < info->method_count; ++i) {
+        godot_instance_method method = {info->methods[i].fn, NULL, NULL};
+        vg_ns->godot_nativescript_register_method(handle, info->name, info->methods[i].name, attributes, method);
+        vg_document(handle, info->name, &info->methods[i]);
+    }
+}
+
 VG_EXPORT void godot_gdnative_init(godot_gdnative_init_options* options) {
-    if (!vg_api_init(options->api_struct))
+    if (!vg_api_init(options->api_struct, options->gd_native_library))
         options->report_loading_error(options->gd_native_library, "verve: this Godot has no NativeScript");
 }
 
@@ -125,32 +206,24 @@ VG_EXPORT void godot_gdnative_terminate(godot_gdnative_terminate_options* option
 }
 
 VG_EXPORT void godot_nativescript_init(void* handle) {
-    godot_instance_create_func create = {vg_construct, NULL, NULL};
-    godot_instance_destroy_func destroy = {vg_destruct, NULL, NULL};
     godot_property_attributes learning;
     godot_property_set_func set_learning = {vg_set_learning, NULL, NULL};
     godot_property_get_func get_learning = {vg_get_learning, NULL, NULL};
     godot_property_set_func set_greedy = {vg_set_greedy, NULL, NULL};
     godot_property_get_func get_greedy = {vg_get_greedy, NULL, NULL};
-    godot_method_attributes attributes = {GODOT_METHOD_RPC_MODE_DISABLED};
     size_t i;
     if (!vg_ns) return;
-    vg_ns->godot_nativescript_register_class(handle, VG_CLASS, "Reference", create, destroy);
-    for (i = 0; i < VG_METHOD_COUNT; ++i) {
-        godot_instance_method method = {vg_methods[i].fn, NULL, NULL};
-        vg_ns->godot_nativescript_register_method(handle, VG_CLASS, vg_methods[i].name, attributes, method);
-        vg_document(handle, &vg_methods[i]);
-    }
+    for (i = 0; i < VG_COUNT(vg_classes); ++i) vg_register_class(handle, &vg_classes[i]);
     learning.rset_type = GODOT_METHOD_RPC_MODE_DISABLED;
     learning.type = GODOT_VARIANT_TYPE_BOOL;
     learning.hint = GODOT_PROPERTY_HINT_NONE;
     vg_core->godot_string_new(&learning.hint_string);
     learning.usage = GODOT_PROPERTY_USAGE_NOEDITOR; /* a run-time switch: not in the inspector */
     learning.default_value = vg_variant_bool(1);
-    vg_ns->godot_nativescript_register_property(handle, VG_CLASS, "learning", &learning, set_learning, get_learning);
+    vg_ns->godot_nativescript_register_property(handle, vg_agent_class, "learning", &learning, set_learning, get_learning);
     vg_core->godot_variant_destroy(&learning.default_value);
     learning.default_value = vg_variant_bool(0); /* `greedy`: the same kind of run-time switch */
-    vg_ns->godot_nativescript_register_property(handle, VG_CLASS, "greedy", &learning, set_greedy, get_greedy);
+    vg_ns->godot_nativescript_register_property(handle, vg_agent_class, "greedy", &learning, set_greedy, get_greedy);
     vg_core->godot_string_destroy(&learning.hint_string);
     vg_core->godot_variant_destroy(&learning.default_value);
 }
