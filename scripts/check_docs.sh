@@ -106,7 +106,7 @@ doc docs/csharp.md 'dotnet build bindings/csharp/Verve -c Release -p:VerveStatic
 in_doc docs/godot.md './scripts/setup.sh --test'
 ctest_doc docs/godot.md "ctest --test-dir build -R '^godot\.'"
 in_doc docs/godot.md 'cp -r build/godot/addons/verve  path/to/your/project/addons/'
-doc docs/godot.md 'ls -R build/godot/addons/verve' 'cd build/godot/addons/verve && ls verve.gdnlib verve_agent.gdns bin/x11/libverve_godot.so bin/x11/libverve.so.0'
+doc docs/godot.md 'ls -R build/godot/addons/verve' 'cd build/godot/addons/verve && ls verve.gdnlib verve_agent.gdns verve_brain.gdns verve_batch.gdns bin/x11/libverve_godot.so bin/x11/libverve.so.0'
 in_doc docs/godot.md 'godot3 --path build/godot/sample '   # the window; the headless run below
 doc docs/godot.md 'godot3-server --path build/godot/sample --fixed-fps 60 --verve-test' \
   'godot3-server --path build/godot/sample --fixed-fps 60 --verve-test --verve-seeds=1'

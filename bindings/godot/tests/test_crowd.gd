@@ -350,7 +350,30 @@ func test_batch_errors():
 	check_error(batch, batch.update(agents, rewards, discrete, continuous, DT), null, "has no batch", "update after close()")
 
 
+# The crowd script of docs/godot.md, its frames called by hand: 60 s of game time, then it saves.
+func test_doc_crowd():
+	Directory.new().remove("user://crowd.xml")
+	var crowd = load("res://crowd.gd").new()
+	crowd._ready()
+	for frame in 60 * 60:
+		crowd._physics_process(1.0 / 60)
+	var steps = crowd.npcs[0].get_stats()["steps"]
+	check(steps >= 500 and steps <= 600, "the doc's crowd decided every 6 or 7 frames (%d steps)" % steps)
+	check(crowd.npcs[99].get_stats()["steps"] == steps and crowd.batch.get_last_error() == "", "in one call for all")
+	var actions = {}
+	for action in crowd.actions:
+		actions[action] = true
+	check(actions.size() > 1, "the crowd's NPCs act on their own observations")
+	crowd._exit_tree()
+	var saved = VerveBrain.new()
+	check(saved.load("user://crowd.xml") and saved.get_rbf_count() == crowd.brain.get_rbf_count(),
+		"the doc's crowd saved its brain: " + saved.get_last_error())
+	Directory.new().remove("user://crowd.xml")
+	crowd.free()
+
+
 func _init():
+	test_doc_crowd()
 	test_brain_bodies()
 	test_brain_persistence()
 	test_batch_equals_single_updates()
