@@ -149,6 +149,14 @@ void Agent::Impl::prefetch(unsigned stage) const noexcept {
     }
 }
 
+void Agent::Impl::addArraysTo(core::PrefetchQueue& q, bool brainToo) const noexcept {
+    if (brainToo) {
+        rep.addArraysTo(q);
+        q.add(weights.data().data(), weights.data().size() * sizeof(float));
+    }
+    td.addArraysTo(q);
+}
+
 void Agent::Impl::prefetchCheck(unsigned stage) const noexcept {
     if (stage == 0) {
         core::prefetchBytes(this, sizeof(brain) + sizeof(&desc));  // the first members
@@ -222,7 +230,7 @@ std::uint32_t Agent::update(float reward, ObservationView obs, float dt, ActionM
 
     // Everything that may allocate, before anything changes (strong guarantee): the lookup, then
     // room for one more RBF everywhere, then the RBF itself (strong on its own).
-    const bool covered = s.rep.find(obs.discrete, s.normalized.data(), s.current);
+    const bool covered = s.rep.find(obs.discrete, s.normalized.data(), s.current, s.ahead);
     bool grows = !covered && s.learning && s.desc.allocation == RbfAllocation::Dynamic;
     const bool overBudget = grows && s.rep.featureCount() >= s.desc.rbfBudget();
     grows = grows && !overBudget;
@@ -244,10 +252,10 @@ std::uint32_t Agent::update(float reward, ObservationView obs, float dt, ActionM
             // V(s) is the value the previous update left in latestValue: no weight changes
             // between two updates (endEpisode, resets and restores clear or recompute it),
             // unless other bodies of a shared brain trained it since.
-            const float before = s.sharesBrain ? s.td.value(s.weights, s.previous) : s.latestValue;
-            const float next = core::bounded(s.td.value(s.weights, s.current), k.values);
+            const float before = s.sharesBrain ? s.td.value(s.weights, s.previous, s.ahead) : s.latestValue;
+            const float next = core::bounded(s.td.value(s.weights, s.current, s.ahead), k.values);
             const float delta = r + k.gamma * next - core::bounded(before, k.values);
-            s.td.trainAndDecay(s.weights, delta, k.rates, k.traceDecay);
+            s.td.trainAndDecay(s.weights, delta, k.rates, k.traceDecay, s.ahead);
             s.stats.tdError = delta;
         }
     }
@@ -259,7 +267,7 @@ std::uint32_t Agent::update(float reward, ObservationView obs, float dt, ActionM
     const bool samples = s.selection == ActionSelection::Sample;
     const float hopeless = s.learning && samples ? core::hopelessValue(k.values) : -std::numeric_limits<float>::infinity();
     const std::uint32_t action = s.td.chooseAction(s.weights, s.current, s.rng, s.probabilities, s.latestValue,
-                                                   mask.allowed, !samples, hopeless);
+                                                   mask.allowed, !samples, hopeless, s.ahead);
     s.stats.value = core::bounded(s.latestValue, k.values);
     s.recordProbabilities(mask.allowed, s.latestValue <= hopeless);
     if (s.learning && s.learnsFromRealSteps()) s.td.mark(s.current, action, s.rep.featureCount());

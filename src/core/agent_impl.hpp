@@ -59,6 +59,10 @@ struct Agent::Impl {
     // descriptor and writes the brain's batch token: stage 0 asks for the members that lead to the
     // brain, stage 1 for the brain's lines up to the descriptor.
     void prefetchCheck(unsigned stage) const noexcept;
+    // And from inside the update before it (core::PrefetchQueue): the arrays an update reads
+    // through, in the order it reads them (centres, weights, live list, traces); with
+    // `brainToo` false only the body's own (the update before used the same brain).
+    void addArraysTo(core::PrefetchQueue& q, bool brainToo) const noexcept;
     static constexpr float kModelErrorAveraging = 0.05f;  // stats.modelError: ~20-step running mean
     bool learnsFromRealSteps() const { return !desc.planning || desc.learnFromRealSteps; }
 
@@ -72,6 +76,7 @@ struct Agent::Impl {
     core::Rng rng;
     bool learning = true;
     ActionSelection selection = ActionSelection::Sample;
+    core::PrefetchQueue* ahead = nullptr;  // a batch's next agent, during one update (batch.cpp)
     // Of the latest update's choice; chooseAction's scratch before that (capacity 1 + numActions),
     // so that an update writes one small block where it wrote two.
     std::vector<float> probabilities;

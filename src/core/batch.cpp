@@ -86,6 +86,14 @@ void Batch::Impl::updateGroups(std::uint32_t begin, std::uint32_t end) noexcept 
     // The groups' agents lie together in `order`, each group in its update order.
     const std::uint32_t first = groupStart[begin], last = groupStart[end];
     constexpr unsigned kStages = Agent::Impl::kPrefetchStages;
+    // Each update asks for the next agent's arrays from inside its loops (Agent::Impl::ahead), when
+    // the crowd's arrays together outgrow the caches, as the first agent's size times the crowd's
+    // tells: from the caches (a 100-agent cart-pole crowd, 3 MB) the asking only costs, out of them
+    // (1,000 agents, 32 MB) it pays (docs/performance.md).
+    constexpr std::size_t kQueueFromCrowdBytes = std::size_t(8) << 20;
+    core::PrefetchQueue ahead;
+    if (first < last) s.agents[order[first]]->impl_->addArraysTo(ahead, true);
+    const bool queues = ahead.bytes() * s.count >= kQueueFromCrowdBytes;
     for (std::uint32_t k = first; k < last; ++k) {
         // Stage st for the agent kStages - st places ahead: each link of an agent's chain of
         // pointers is asked for a whole update before the stage that reads it, and all of them
@@ -95,10 +103,18 @@ void Batch::Impl::updateGroups(std::uint32_t begin, std::uint32_t end) noexcept 
             if (k + kStages - st < last) s.agents[order[k + kStages - st]]->impl_->prefetch(st);
         }
         const std::uint32_t i = order[k];
+        Agent::Impl& agent = *s.agents[i]->impl_;
+        if (queues && k + 1 < last) {
+            const Agent::Impl& next = *s.agents[order[k + 1]]->impl_;
+            ahead.clear();
+            next.addArraysTo(ahead, next.brain != agent.brain);
+            agent.ahead = &ahead;
+        }
         ErrorCode code = ErrorCode::Internal;
         const char* what = "unknown exception";
         try {
             s.actions[i] = s.agents[i]->update(s.rewards[i], views[i], s.dt);
+            agent.ahead = nullptr;
             continue;
         } catch (const Error& e) {
             code = e.code();
@@ -111,6 +127,7 @@ void Batch::Impl::updateGroups(std::uint32_t begin, std::uint32_t end) noexcept 
         } catch (...) {
             failure.record(i, code, what);
         }
+        agent.ahead = nullptr;
         if (s.results != nullptr) s.results[i] = static_cast<int>(code);
     }
 }

@@ -27,6 +27,7 @@ std::uint32_t trainDecayRows(const TraceStep& s, float* __restrict weights, floa
     constexpr std::uint32_t kAhead = 16;
     for (std::uint32_t i = 0; i < count; ++i) {
         const std::uint32_t feature = live[i];
+        askAhead(s.ahead, 1);
         if (i + kAhead < count) {
             prefetchLineForWrite(traces + std::size_t(live[i + kAhead]) * stride);
             prefetchLineForWrite(weights + std::size_t(live[i + kAhead]) * weightStride);

@@ -8,11 +8,16 @@
 #include <cstdint>
 
 #include "core/active_feature.hpp"
+#include "core/prefetch.hpp"
 
 namespace verve::core {
 
 // RBFs of a scan are stored in blocks of kScanLanes, dimension by dimension: [block][dim][lane].
 constexpr std::uint32_t kScanLanes = 8;
+// Cache lines of a batch's next agent asked for (PrefetchQueue) per block of kScanLanes RBFs
+// scanned, per 4 rows summed, and per live trace trained: about as many as a cart-pole-shaped
+// update reads, spread over it.
+constexpr unsigned kAheadPerBlock = 3;
 
 struct ScanParams {
     const float* point = nullptr;            // the input, dims values in [-1, 1]
@@ -21,6 +26,7 @@ struct ScanParams {
     float cutoff2 = 0.0f;        // squared distance beyond which an activation counts as zero
     float width2 = 0.0f;         // squared width: an RBF this close means no new one is needed
     float negInv2Sigma2 = 0.0f;  // activation = exp(d2 * negInv2Sigma2)
+    PrefetchQueue* ahead = nullptr;  // a batch's next agent: asked for as the scan goes (prefetch.hpp)
 };
 
 // One step of TD learning over the live traces (td_learner.hpp).
@@ -30,6 +36,7 @@ struct TraceStep {
     std::uint32_t weightStride = 0;
     float decay = 0.0f;
     float threshold = 0.0f;  // a trace whose value component falls below it is dropped
+    PrefetchQueue* ahead = nullptr;  // as in ScanParams
 };
 
 struct Kernels {
@@ -46,7 +53,7 @@ struct Kernels {
     void (*boxesWithin)(const ScanParams& p, const float* boxes, std::size_t count, float reach2, std::uint8_t* masks);
     // sums[k] = sum over phi of row(phi.index)[k] * phi.activation, for k < columns <= stride.
     void (*rowSums)(const float* weights, std::uint32_t stride, const ActiveFeature* phi, std::size_t n,
-                    std::uint32_t columns, float* sums);
+                    std::uint32_t columns, float* sums, PrefetchQueue* ahead);
     // For each live feature: w += step * e, then e *= decay; drops (zeroes) the traces that fall
     // below the threshold and compacts `live` in order. Returns how many stay live.
     std::uint32_t (*trainDecay)(const TraceStep& s, float* weights, float* traces, std::uint32_t* live,

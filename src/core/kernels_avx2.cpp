@@ -58,6 +58,7 @@ std::size_t scan(const ScanParams& p, const float* centres, const std::uint32_t*
     int near = 0;
     const float* block = centres;
     for (std::size_t first = 0; first < count; first += kScanLanes) {
+        askAhead(p.ahead, kAheadPerBlock);
         __m256 d2 = _mm256_setzero_ps();
         for (std::uint32_t d = 0; d < p.dims; ++d, block += kScanLanes) {
             __m256 diff = _mm256_sub_ps(_mm256_set1_ps(p.point[d]), _mm256_loadu_ps(block));
@@ -115,7 +116,7 @@ void boxesWithin(const ScanParams& p, const float* boxes, std::size_t count, flo
 }
 
 void rowSums(const float* weights, std::uint32_t stride, const ActiveFeature* phi, std::size_t n,
-             std::uint32_t columns, float* sums) {
+             std::uint32_t columns, float* sums, PrefetchQueue* ahead) {
     const __m256i laneNumbers = _mm256_setr_epi32(0, 1, 2, 3, 4, 5, 6, 7);
     for (std::uint32_t c = 0; c < columns; c += 8) {
         // Up to 8 columns per pass; a masked load never reads past a row's last column.
@@ -125,6 +126,7 @@ void rowSums(const float* weights, std::uint32_t stride, const ActiveFeature* ph
         __m256 acc[4] = {_mm256_setzero_ps(), _mm256_setzero_ps(), _mm256_setzero_ps(), _mm256_setzero_ps()};
         std::size_t i = 0;
         for (; i + 4 <= n; i += 4) {
+            askAhead(ahead, kAheadPerBlock);
             for (std::size_t j = 0; j < 4; ++j) {
                 const __m256 w = _mm256_maskload_ps(base + std::size_t(phi[i + j].index) * stride, mask);
                 acc[j] = _mm256_fmadd_ps(w, _mm256_set1_ps(phi[i + j].activation), acc[j]);

@@ -18,6 +18,7 @@ std::size_t scan(const ScanParams& p, const float* centres, const std::uint32_t*
     std::size_t n = 0;
     const float* block = centres;
     for (std::size_t first = 0; first < count; first += kScanLanes) {
+        askAhead(p.ahead, kAheadPerBlock);
         Lanes d2 = Lanes::Zero();
         for (std::uint32_t d = 0; d < p.dims; ++d, block += kScanLanes) {
             Lanes diff = p.point[d] - Eigen::Map<const Lanes>(block);
@@ -72,12 +73,13 @@ float columnSum(const float* weights, std::uint32_t stride, const ActiveFeature*
 }
 
 void rowSums(const float* weights, std::uint32_t stride, const ActiveFeature* phi, std::size_t n,
-             std::uint32_t columns, float* sums) {
+             std::uint32_t columns, float* sums, PrefetchQueue* ahead) {
     std::uint32_t c = 0;
     for (; c + 4 <= columns; c += 4) {  // four columns at once, two features in flight
         Quad a = Quad::Zero(), b = Quad::Zero();
         std::size_t i = 0;
         for (; i + 2 <= n; i += 2) {
+            askAhead(ahead, (i & 2) != 0 ? kAheadPerBlock : 0);  // per 4 rows
             a += Eigen::Map<const Quad>(weights + std::size_t(phi[i].index) * stride + c) * phi[i].activation;
             b += Eigen::Map<const Quad>(weights + std::size_t(phi[i + 1].index) * stride + c) * phi[i + 1].activation;
         }

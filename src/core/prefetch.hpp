@@ -26,4 +26,45 @@ void prefetchData(const Vector& v, std::size_t maxLines = 16) noexcept {
     prefetchBytes(v.data(), v.size() * sizeof(v[0]), maxLines);
 }
 
+// The next agent's arrays, asked for a few lines at a time from inside the loops of this agent's
+// update (the kernels take it through ScanParams, TraceStep and rowSums), so that they arrive while
+// this one computes. A crowd's update reads tens of kilobytes (a cart-pole-shaped agent: centres,
+// weights and traces of 676 RBFs, ~450 cache lines); asked for all at once they gained nothing
+// (docs/performance.md). Into the second-level cache: the first level holds this update's.
+class PrefetchQueue {
+public:
+    void clear() noexcept { count_ = next_ = 0; bytes_ = 0; }
+    // Ranges are asked for in the order they are added (up to kRanges of them).
+    void add(const void* p, std::size_t bytes) noexcept {
+        if (p == nullptr || bytes == 0 || count_ == kRanges) return;
+        ranges_[count_++] = Range{static_cast<const char*>(p), static_cast<const char*>(p) + bytes};
+        bytes_ += bytes;
+    }
+    std::size_t bytes() const noexcept { return bytes_; }
+    // Asks for the next `lines` cache lines, if any are left.
+    void askNext(unsigned lines) noexcept {
+        for (; lines > 0 && next_ < count_; --lines) {
+            Range& r = ranges_[next_];
+            __builtin_prefetch(r.at, 0, 2);
+            r.at += kCacheLine;
+            if (r.at >= r.end) ++next_;
+        }
+    }
+
+private:
+    struct Range {
+        const char* at;
+        const char* end;
+    };
+    static constexpr unsigned kRanges = 4;
+    Range ranges_[kRanges];
+    unsigned count_ = 0, next_ = 0;
+    std::size_t bytes_ = 0;
+};
+
+// For a kernel's loop: `lines` more of the queue, when there is one.
+inline void askAhead(PrefetchQueue* ahead, unsigned lines) noexcept {
+    if (ahead != nullptr) ahead->askNext(lines);
+}
+
 }  // namespace verve::core

@@ -342,7 +342,7 @@ std::size_t StateRepresentation::neighbourCandidates(const float* point) const {
 }
 
 bool StateRepresentation::find(const std::int32_t* discrete, const float* continuous,
-                               std::vector<ActiveFeature>& out) const {
+                               std::vector<ActiveFeature>& out, PrefetchQueue* ahead) const {
     out.clear();
     // Without discrete sensors there is at most one array: begin() finds it without reading the
     // map's bucket array, one cache miss less for a crowd's update.
@@ -361,6 +361,7 @@ bool StateRepresentation::find(const std::int32_t* discrete, const float* contin
     params.cutoff2 = kCutoffWidths * kCutoffWidths * sigma_ * sigma_;
     params.width2 = sigma_ * sigma_;
     params.negInv2Sigma2 = -1.0f / (2.0f * sigma_ * sigma_);
+    params.ahead = ahead;
     bool nearOne = false;
     const bool boxes = wholeLookupsLeft_ == 0;
     if (!boxes) --wholeLookupsLeft_;
@@ -406,6 +407,14 @@ void StateRepresentation::prefetchLookup(unsigned stage) const noexcept {
         prefetchData(cell.centres);
         if (!cell.consecutive) prefetchData(cell.features);
     }
+}
+
+void StateRepresentation::addArraysTo(PrefetchQueue& q) const noexcept {
+    if (keyCount_ != 1 || arrays_.empty()) return;
+    const Array& array = arrays_.begin()->second;
+    if (array.cells.size() != 1) return;
+    const std::vector<float>& centres = array.cells.begin()->second.centres;
+    q.add(centres.data(), centres.size() * sizeof(float));
 }
 
 void StateRepresentation::judgeBoxes() const {

@@ -39,7 +39,9 @@ public:
     }
     static std::size_t foundCapacity(std::uint32_t features) { return std::size_t(features) + kScanLanes; }
     // The same without allocating; returns whether some RBF lies within one width.
-    bool find(const std::int32_t* discrete, const float* continuous, std::vector<ActiveFeature>& out) const;
+    // `ahead`: a batch's next agent, asked for as the scan goes (prefetch.hpp).
+    bool find(const std::int32_t* discrete, const float* continuous, std::vector<ActiveFeature>& out,
+              PrefetchQueue* ahead = nullptr) const;
 
     std::uint32_t featureCount() const { return featureCount_; }
     std::uint32_t numContinuous() const { return numContinuous_; }
@@ -56,6 +58,8 @@ public:
     // what the one before asked for. Other representations ask for nothing.
     static constexpr unsigned kPrefetchStages = 3;
     void prefetchLookup(unsigned stage) const noexcept;
+    // The same batch's PrefetchQueue: the centres of such a representation's cell.
+    void addArraysTo(PrefetchQueue& q) const noexcept;
 
     // Divides the learning rates: the expected activation sum of a lattice of RBFs,
     // sqrt(2 pi) ~ 2.5 per continuous dimension, and 1 when all sensors are discrete.

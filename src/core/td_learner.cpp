@@ -18,18 +18,18 @@ void TdLearner::reserve(std::uint32_t features, std::size_t active) {
     reserveRoom(live_, std::min<std::size_t>(liveCount_ + active, features) + 1);
 }
 
-float TdLearner::value(const WeightTable& w, const std::vector<ActiveFeature>& phi) const {
+float TdLearner::value(const WeightTable& w, const std::vector<ActiveFeature>& phi, PrefetchQueue* ahead) const {
     float v = 0.0f;
-    kernels_->rowSums(w.data().data(), w.stride(), phi.data(), phi.size(), 1, &v);
+    kernels_->rowSums(w.data().data(), w.stride(), phi.data(), phi.size(), 1, &v, ahead);
     return v;
 }
 
 std::uint32_t TdLearner::chooseAction(const WeightTable& w, const std::vector<ActiveFeature>& phi, Rng& rng,
                                       std::vector<float>& activations, float& value, const std::uint8_t* allowed,
-                                      bool greedy, float uniformAtOrBelow) const {
+                                      bool greedy, float uniformAtOrBelow, PrefetchQueue* ahead) const {
     // One pass over a row's first columns, [value, policy[A]]; then the value leaves the front.
     activations.resize(stride_);
-    kernels_->rowSums(w.data().data(), w.stride(), phi.data(), phi.size(), stride_, activations.data());
+    kernels_->rowSums(w.data().data(), w.stride(), phi.data(), phi.size(), stride_, activations.data(), ahead);
     value = activations[WeightLayout::kValue];
     activations.erase(activations.begin());
     float total = 0.0f;
@@ -66,7 +66,7 @@ std::uint32_t TdLearner::uniformAllowed(Rng& rng, const std::uint8_t* allowed) c
     return 0;  // unreachable: callers allow at least one action
 }
 
-void TdLearner::trainAndDecay(WeightTable& w, float delta, TdRates rates, float decay) {
+void TdLearner::trainAndDecay(WeightTable& w, float delta, TdRates rates, float decay, PrefetchQueue* ahead) {
     // Learning never takes a weight step near kStepLimit (it bootstraps from bounded values), but
     // weights a hostile save brings up to AgentSnapshot::kWeightLimit could make one: clamped, every
     // step stays below half the float spacing at that limit, so no weight can be pushed past it.
@@ -87,6 +87,7 @@ void TdLearner::trainAndDecay(WeightTable& w, float delta, TdRates rates, float 
     s.weightStride = w.stride();
     s.decay = decay;
     s.threshold = threshold_;
+    s.ahead = ahead;
     liveCount_ = kernels_->trainDecay(s, w.data().data(), traces_.data(), live_.data(), liveCount_);
     if (bounded) {
         for (std::uint32_t feature : trained_) {

@@ -85,7 +85,8 @@ public:
     static constexpr float kStepLimit = 1e12f;  // trainAndDecay's clamp on a weight's step (traces <= 1)
     TdLearner(std::uint32_t numActions, float traceThreshold);
 
-    float value(const WeightTable& w, const std::vector<ActiveFeature>& phi) const;
+    // `ahead`, in these three: a batch's next agent, asked for as the kernels go (prefetch.hpp).
+    float value(const WeightTable& w, const std::vector<ActiveFeature>& phi, PrefetchQueue* ahead = nullptr) const;
     // Roulette choice over the sigmoid action activations y_a (left in `activations`); one pass
     // over the features also yields V(s) into `value`. `allowed` (numActions flags, or nullptr for
     // all) zeroes the activation of every action not allowed, so it is never chosen; `greedy` takes
@@ -94,11 +95,12 @@ public:
     std::uint32_t chooseAction(const WeightTable& w, const std::vector<ActiveFeature>& phi, Rng& rng,
                                std::vector<float>& activations, float& value,
                                const std::uint8_t* allowed = nullptr, bool greedy = false,
-                               float uniformAtOrBelow = -std::numeric_limits<float>::infinity()) const;
+                               float uniformAtOrBelow = -std::numeric_limits<float>::infinity(),
+                               PrefetchQueue* ahead = nullptr) const;
 
     // w += eta * delta * e over the live traces, then e *= decay; traces whose every component
     // falls below the threshold are dropped. One pass: both follow the live list.
-    void trainAndDecay(WeightTable& w, float delta, TdRates rates, float decay);
+    void trainAndDecay(WeightTable& w, float delta, TdRates rates, float decay, PrefetchQueue* ahead = nullptr);
     // e = max(e, phi) for the critic; e_a = max(e_a, phi) for the chosen action's neuron.
     void mark(const std::vector<ActiveFeature>& phi, std::uint32_t action, std::uint32_t featureCount);
     void clear();
@@ -109,6 +111,11 @@ public:
     // A batch's prefetch (Agent::Impl::prefetch): the live list and the first lines of the traces
     // (all of a small agent's).
     void prefetch() const noexcept;
+    // The same batch's PrefetchQueue: the live list and every trace.
+    void addArraysTo(PrefetchQueue& q) const noexcept {
+        q.add(live_.data(), std::size_t(liveCount_) * sizeof(std::uint32_t));
+        q.add(traces_.data(), traces_.size() * sizeof(float));
+    }
 
     std::uint32_t liveCount() const { return liveCount_; }
     std::uint32_t traceStride() const { return stride_; }

@@ -240,6 +240,61 @@ TEST(Batch, SameResultsOnAHostJobSystem) {
     }
 }
 
+// A crowd whose arrays outgrow the caches (300 cart-pole-shaped agents of ~700 RBFs, ~10 MB) takes
+// the batch's other path: each update asks for the next agent's arrays from inside its loops. The
+// same actions and agents as single updates, and single updates afterwards still match.
+TEST(Batch, SameResultsForACrowdLargerThanTheCaches) {
+    const verve_agent_desc d = shape(0, 4, 8, 3, 21);
+    verve_agent* grown = nullptr;
+    ASSERT_EQ(verve_agent_create(&d, &grown), VERVE_OK);
+    uint32_t action = 0, rbfs = 0;
+    for (float t = 0.0f; rbfs < 700; t += 1.0f) {
+        const float x[4] = {std::sin(0.05f * t), std::cos(0.031f * t), std::sin(0.017f * t + 1), std::cos(0.043f * t + 2)};
+        ASSERT_EQ(verve_agent_update(grown, action == 0 ? 0.1f : -0.1f, nullptr, 0, x, 4, 0.1f, &action), VERVE_OK);
+        ASSERT_EQ(verve_agent_get_rbf_count(grown, &rbfs), VERVE_OK);
+    }
+    const std::string xml = saved(grown);
+    verve_agent_destroy(grown);
+    constexpr uint32_t kAgents = 300;
+    std::vector<verve_agent*> batchAgents(kAgents), singleAgents(kAgents);
+    for (auto* set : {&batchAgents, &singleAgents}) {
+        for (auto*& a : *set) ASSERT_EQ(verve_agent_load_memory(xml.data(), xml.size(), &a), VERVE_OK);
+    }
+    verve_batch* batch = makeBatch(2);
+    std::vector<uint32_t> batchActions(kAgents, 0), singleActions(kAgents, 0);
+    std::vector<float> rewards(kAgents), sensors(4 * kAgents);
+    for (int step = 0; step < 30; ++step) {
+        for (uint32_t i = 0; i < kAgents; ++i) {
+            rewards[i] = batchActions[i] == i % 3 ? 0.5f : -0.1f;
+            for (uint32_t c = 0; c < 4; ++c) {
+                sensors[4 * i + c] = std::sin(0.3f * static_cast<float>(step) + 0.7f * static_cast<float>(i) + 1.3f * static_cast<float>(c));
+            }
+        }
+        ASSERT_EQ(verve_batch_update(batch, batchAgents.data(), kAgents, rewards.data(), nullptr, nullptr, 0,
+                                     sensors.data(), nullptr, 4 * kAgents, 0.1f, batchActions.data(), nullptr),
+                  VERVE_OK)
+            << verve_last_error();
+        for (uint32_t i = 0; i < kAgents; ++i) {
+            ASSERT_EQ(verve_agent_update(singleAgents[i], rewards[i], nullptr, 0, &sensors[4 * i], 4, 0.1f, &singleActions[i]), VERVE_OK);
+        }
+        ASSERT_EQ(batchActions, singleActions) << "step " << step;
+    }
+    for (uint32_t i = 0; i < kAgents; ++i) {  // a single update after the batch's
+        const float x[4] = {0.1f, -0.2f, 0.3f, -0.4f};
+        uint32_t a = 0, b = 0;
+        ASSERT_EQ(verve_agent_update(batchAgents[i], 0.2f, nullptr, 0, x, 4, 0.1f, &a), VERVE_OK);
+        ASSERT_EQ(verve_agent_update(singleAgents[i], 0.2f, nullptr, 0, x, 4, 0.1f, &b), VERVE_OK);
+        ASSERT_EQ(a, b);
+        if (i % 50 == 0) {
+            EXPECT_EQ(saved(batchAgents[i]), saved(singleAgents[i])) << "agent " << i;
+        }
+    }
+    verve_batch_destroy(batch);
+    for (auto* set : {&batchAgents, &singleAgents}) {
+        for (auto* a : *set) verve_agent_destroy(a);
+    }
+}
+
 TEST(Batch, OffsetsReadTheSameValuesAsPacking) {
     // Agent 0: 2 continuous, agent 1: 1 discrete; given at explicit, padded offsets.
     const verve_agent_desc a = shape(0, 2, 8, 2, 5), b = shape(10, 0, 10, 5, 6);

@@ -170,7 +170,7 @@ TEST(Kernels, RowSumsAddEveryColumnOfEveryFeature) {
                 for (std::size_t i = 0; i < n; ++i) phi.emplace_back(static_cast<std::uint32_t>(rng.below(64)), rng.uniform());
                 for (std::uint32_t columns = 1; columns <= stride; ++columns) {
                     std::vector<float> sums(columns, -99.0f);
-                    k->rowSums(weights.data(), stride, phi.data(), n, columns, sums.data());
+                    k->rowSums(weights.data(), stride, phi.data(), n, columns, sums.data(), nullptr);
                     for (std::uint32_t c = 0; c < columns; ++c) {
                         double expected = 0.0;
                         for (const auto& f : phi) expected += double(weights[f.index * stride + c]) * f.activation;
