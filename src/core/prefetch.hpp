@@ -11,6 +11,8 @@ constexpr std::size_t kCacheLine = 64;
 // One cache line, to be read or to be written.
 inline void prefetchLine(const void* p) noexcept { __builtin_prefetch(p, 0); }
 inline void prefetchLineForWrite(const void* p) noexcept { __builtin_prefetch(p, 1); }
+// Into the second-level cache only (PrefetchQueue): the first holds what is read now.
+inline void prefetchLineToL2(const void* p) noexcept { __builtin_prefetch(p, 0, 2); }
 
 // The cache lines of [p, p + bytes), at most maxLines of them (the first ones: the hardware
 // prefetcher follows a stream once it has begun).
@@ -45,7 +47,7 @@ public:
     void askNext(unsigned lines) noexcept {
         for (; lines > 0 && next_ < count_; --lines) {
             Range& r = ranges_[next_];
-            __builtin_prefetch(r.at, 0, 2);
+            prefetchLineToL2(r.at);
             r.at += kCacheLine;
             if (r.at >= r.end) ++next_;
         }

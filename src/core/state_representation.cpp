@@ -392,29 +392,32 @@ bool StateRepresentation::find(const std::int32_t* discrete, const float* contin
     return nearOne;
 }
 
+const StateRepresentation::Array* StateRepresentation::onlyArray() const noexcept {
+    return keyCount_ == 1 && !arrays_.empty() ? &arrays_.begin()->second : nullptr;
+}
+
+const StateRepresentation::Cell* StateRepresentation::onlyCell() const noexcept {
+    const Array* array = onlyArray();
+    return array != nullptr && array->cells.size() == 1 ? &array->cells.begin()->second : nullptr;
+}
+
 void StateRepresentation::prefetchLookup(unsigned stage) const noexcept {
-    if (keyCount_ != 1 || arrays_.empty()) return;
-    const Array& array = arrays_.begin()->second;
     if (stage == 0) {
-        prefetchBytes(&array, sizeof(array));
+        if (const Array* array = onlyArray()) prefetchBytes(array, sizeof(*array));
         return;
     }
-    if (array.cells.size() != 1) return;
-    const Cell& cell = array.cells.begin()->second;
+    const Cell* cell = onlyCell();
+    if (cell == nullptr) return;
     if (stage == 1) {
-        prefetchBytes(&cell, sizeof(cell));
+        prefetchBytes(cell, sizeof(*cell));
     } else {
-        prefetchData(cell.centres);
-        if (!cell.consecutive) prefetchData(cell.features);
+        prefetchData(cell->centres);
+        if (!cell->consecutive) prefetchData(cell->features);
     }
 }
 
 void StateRepresentation::addArraysTo(PrefetchQueue& q) const noexcept {
-    if (keyCount_ != 1 || arrays_.empty()) return;
-    const Array& array = arrays_.begin()->second;
-    if (array.cells.size() != 1) return;
-    const std::vector<float>& centres = array.cells.begin()->second.centres;
-    q.add(centres.data(), centres.size() * sizeof(float));
+    if (const Cell* cell = onlyCell()) q.add(cell->centres.data(), cell->centres.size() * sizeof(float));
 }
 
 void StateRepresentation::judgeBoxes() const {

@@ -118,6 +118,10 @@ private:
     void updateBlockBounds(Cell& c, std::size_t rbf) const;  // to the cell's RBF number rbf
     void rebuildBlockBounds(Cell& c) const;
     std::uint64_t discreteKey(const std::int32_t* discrete) const;
+    // The array of a representation without discrete sensors, and its cell when it has one only
+    // (what the batch's prefetches follow); null otherwise.
+    const Array* onlyArray() const noexcept;
+    const Cell* onlyCell() const noexcept;
     void cellCoords(const float* point, std::int32_t* coords) const;
     // Fills candidates_ (up to 3 distinct cell coordinates per dimension around the point) and
     // resets the odometer offsets_; returns the number of neighbour cells.

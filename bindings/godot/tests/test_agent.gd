@@ -2,24 +2,10 @@
 # (each must print a Godot error, return false / -1 / null and change nothing), and persistence.
 #   godot3-server --path build/godot/tests --fixed-fps 60 --script res://test_agent.gd
 # (exit code 1 on a failure).
-extends SceneTree
+extends "res://checks.gd"
 
 const VerveAgent = preload("res://addons/verve/verve_agent.gdns")
 const OPTIONS = {"discrete_sensors": [3], "continuous_sensor_circular": [true, false], "actions": 3, "seed": 7}
-
-var failures = 0
-
-
-func check(condition, what):
-	if not condition:
-		failures += 1
-		print("FAIL: ", what)
-
-
-# The call failed the way the binding promises: the expected return and a message naming it.
-func check_error(agent, result, expected, message_part, what):
-	check(typeof(result) == typeof(expected) and result == expected, "%s returns %s (got %s)" % [what, expected, result])
-	check(message_part in agent.get_last_error(), "%s: '%s' in '%s'" % [what, message_part, agent.get_last_error()])
 
 
 func new_agent(options = OPTIONS):
@@ -273,8 +259,7 @@ func _finalize():
 	var saved = VerveAgent.new()
 	check(saved.load("user://npc.xml") and saved.get_stats()["steps"] == 200, "the doc's NPC saved its agent")
 	Directory.new().remove("user://npc.xml")
-	print("verve godot binding: %d failures" % failures)
-	OS.exit_code = 0 if failures == 0 else 1
+	report("verve godot binding")
 
 
 func _init():

@@ -4,7 +4,7 @@
 # single updates and compares. Every refused call must return null / false, give its error in
 # get_last_error() and change nothing (the twin still agrees afterwards).
 #   godot3-server --path build/godot/tests --script res://test_crowd.gd   (exit code 1 on a failure)
-extends SceneTree
+extends "res://checks.gd"
 
 const VerveAgent = preload("res://addons/verve/verve_agent.gdns")
 const VerveBrain = preload("res://addons/verve/verve_brain.gdns")
@@ -15,21 +15,6 @@ const OtherAgent = preload("res://other_agent.gdns")  # the same plugin loaded a
 const WALKER = {"continuous_sensor_circular": [true, false], "actions": 3, "seed": 11}
 const SNIFFER = {"discrete_sensors": [3], "continuous_sensor_circular": [false], "actions": 2, "seed": 5}
 const DT = 0.1
-
-var failures = 0
-
-
-func check(condition, what):
-	if not condition:
-		failures += 1
-		print("FAIL: ", what)
-
-
-# The call failed the way the binding promises: the expected return and a message naming it.
-func check_error(object, result, expected, message_part, what):
-	check(typeof(result) == typeof(expected) and result == expected, "%s returns %s (got %s)" % [what, expected, result])
-	check(message_part in object.get_last_error(), "%s: '%s' in '%s'" % [what, message_part, object.get_last_error()])
-
 
 # A copy one value shorter (PoolRealArray has no subarray in Godot 3.2).
 func shorter(values):
@@ -378,6 +363,5 @@ func _init():
 	test_brain_persistence()
 	test_batch_equals_single_updates()
 	test_batch_errors()
-	print("verve godot crowd: %d failures" % failures)
-	OS.exit_code = 0 if failures == 0 else 1
+	report("verve godot crowd")
 	quit()
