@@ -182,6 +182,30 @@ const char* vg_describe(const godot_variant* v) {
     return "an object of another class or library";
 }
 
+int vg_with_path(vg_call* c, int i, vg_path_fn use, void* context) {
+    godot_char_string path;
+    int ok;
+    if (!vg_arg_type(c, i, "path", GODOT_VARIANT_TYPE_STRING)) return 0;
+    path = vg_utf8(c->argv[i], 1);
+    ok = vg_check(c, use(vg_core->godot_char_string_get_data(&path), context));
+    vg_core->godot_char_string_destroy(&path);
+    return ok;
+}
+
+int vg_with_bytes(vg_call* c, int i, vg_bytes_fn use, void* context) {
+    godot_pool_byte_array bytes;
+    godot_pool_byte_array_read_access* read;
+    int ok;
+    if (!vg_arg_type(c, i, "data", GODOT_VARIANT_TYPE_POOL_BYTE_ARRAY)) return 0;
+    bytes = vg_core->godot_variant_as_pool_byte_array(c->argv[i]);
+    read = vg_core->godot_pool_byte_array_read(&bytes);
+    ok = vg_check(c, use(vg_core->godot_pool_byte_array_read_access_ptr(read),
+                         (size_t)vg_core->godot_pool_byte_array_size(&bytes), context));
+    vg_core->godot_pool_byte_array_read_access_destroy(read);
+    vg_core->godot_pool_byte_array_destroy(&bytes);
+    return ok;
+}
+
 godot_variant vg_save_to_bytes(vg_call* c, vg_save_memory_fn save, const void* object) {
     size_t size = 0;
     godot_pool_byte_array bytes;

@@ -66,6 +66,14 @@ void* vg_instance_of(const godot_variant* v, const char* class_tag);
 /* What v is, for an error: vg_type_name, or for an object "a freed object" or our class's name. */
 const char* vg_describe(const godot_variant* v);
 
+/* Argument i, a path String (res:// and user:// made file-system paths), handed to use(path,
+ * context); the library's answer checked (vg_check). For loads and saves to files. */
+typedef verve_result (*vg_path_fn)(const char* path, void* context);
+int vg_with_path(vg_call* c, int i, vg_path_fn use, void* context);
+/* Argument i, a PoolByteArray, handed to use(data, size, context) and checked. For loads from memory. */
+typedef verve_result (*vg_bytes_fn)(const void* data, size_t size, void* context);
+int vg_with_bytes(vg_call* c, int i, vg_bytes_fn use, void* context);
+
 /* A save to memory (verve_agent_save_memory and its kin, the object cast away) as a PoolByteArray
  * variant, by the two-call pattern; null after reporting an error. */
 typedef verve_result (*vg_save_memory_fn)(const void* object, void* buffer, size_t* size);

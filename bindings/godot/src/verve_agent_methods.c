@@ -37,17 +37,19 @@ VG_METHOD(create) {
     return vg_variant_bool(1);
 }
 
+/* The library's loads and save in vg_with_path's and vg_with_bytes's form. */
+static verve_result vg_load_file(const char* path, void* out) { return verve_agent_load(path, out); }
+static verve_result vg_load_memory(const void* data, size_t size, void* out) {
+    return verve_agent_load_memory(data, size, out);
+}
+static verve_result vg_save_file(const char* path, void* agent) { return verve_agent_save(agent, path); }
+
 VG_METHOD(load) {
     vg_call c;
     verve_agent* fresh = NULL;
-    godot_char_string path;
     int ok;
     VG_UNUSED;
-    if (!vg_begin(&c, user_data, "load", argc, argv, 1, 1) || !vg_arg_type(&c, 0, "path", GODOT_VARIANT_TYPE_STRING))
-        return vg_variant_bool(0);
-    path = vg_utf8(argv[0], 1);
-    ok = vg_check(&c, verve_agent_load(vg_core->godot_char_string_get_data(&path), &fresh));
-    vg_core->godot_char_string_destroy(&path);
+    ok = vg_begin(&c, user_data, "load", argc, argv, 1, 1) && vg_with_path(&c, 0, vg_load_file, &fresh);
     if (ok) vg_adopt(c.self, fresh);
     return vg_variant_bool(ok);
 }
@@ -55,19 +57,9 @@ VG_METHOD(load) {
 VG_METHOD(load_bytes) {
     vg_call c;
     verve_agent* fresh = NULL;
-    godot_pool_byte_array bytes;
-    godot_pool_byte_array_read_access* read;
     int ok;
     VG_UNUSED;
-    if (!vg_begin(&c, user_data, "load_bytes", argc, argv, 1, 1) ||
-        !vg_arg_type(&c, 0, "data", GODOT_VARIANT_TYPE_POOL_BYTE_ARRAY))
-        return vg_variant_bool(0);
-    bytes = vg_core->godot_variant_as_pool_byte_array(argv[0]);
-    read = vg_core->godot_pool_byte_array_read(&bytes);
-    ok = vg_check(&c, verve_agent_load_memory(vg_core->godot_pool_byte_array_read_access_ptr(read),
-                                              (size_t)vg_core->godot_pool_byte_array_size(&bytes), &fresh));
-    vg_core->godot_pool_byte_array_read_access_destroy(read);
-    vg_core->godot_pool_byte_array_destroy(&bytes);
+    ok = vg_begin(&c, user_data, "load_bytes", argc, argv, 1, 1) && vg_with_bytes(&c, 0, vg_load_memory, &fresh);
     if (ok) vg_adopt(c.self, fresh);
     return vg_variant_bool(ok);
 }
@@ -75,16 +67,9 @@ VG_METHOD(load_bytes) {
 VG_METHOD(save) {
     vg_call c;
     verve_agent* a;
-    godot_char_string path;
-    int ok;
     VG_UNUSED;
-    if (!vg_begin(&c, user_data, "save", argc, argv, 1, 1) || !vg_agent_handle(&c, &a) ||
-        !vg_arg_type(&c, 0, "path", GODOT_VARIANT_TYPE_STRING))
-        return vg_variant_bool(0);
-    path = vg_utf8(argv[0], 1);
-    ok = vg_check(&c, verve_agent_save(a, vg_core->godot_char_string_get_data(&path)));
-    vg_core->godot_char_string_destroy(&path);
-    return vg_variant_bool(ok);
+    return vg_variant_bool(vg_begin(&c, user_data, "save", argc, argv, 1, 1) && vg_agent_handle(&c, &a) &&
+                           vg_with_path(&c, 0, vg_save_file, a));
 }
 
 static verve_result vg_agent_save_memory(const void* agent, void* buffer, size_t* size) {

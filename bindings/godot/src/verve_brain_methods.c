@@ -44,18 +44,20 @@ VG_METHOD(create) {
     return vg_variant_bool(1);
 }
 
+/* The library's loads and saves in vg_with_path's and vg_with_bytes's form. */
+static verve_result vg_load_file(const char* path, void* out) { return verve_brain_load(path, out); }
+static verve_result vg_load_memory(const void* data, size_t size, void* out) {
+    return verve_brain_load_memory(data, size, out);
+}
+static verve_result vg_save_xml_file(const char* path, void* brain) { return verve_brain_save(brain, path); }
+static verve_result vg_save_binary_file(const char* path, void* brain) { return verve_brain_save_binary(brain, path); }
+
 VG_METHOD(load) {
     vg_call c;
     verve_brain* fresh = NULL;
-    godot_char_string path;
     int ok;
     VG_UNUSED;
-    if (!vg_begin_brain(&c, user_data, "load", argc, argv, 1, 1) ||
-        !vg_arg_type(&c, 0, "path", GODOT_VARIANT_TYPE_STRING))
-        return vg_variant_bool(0);
-    path = vg_utf8(argv[0], 1);
-    ok = vg_check(&c, verve_brain_load(vg_core->godot_char_string_get_data(&path), &fresh));
-    vg_core->godot_char_string_destroy(&path);
+    ok = vg_begin_brain(&c, user_data, "load", argc, argv, 1, 1) && vg_with_path(&c, 0, vg_load_file, &fresh);
     if (ok) vg_adopt(user_data, fresh);
     return vg_variant_bool(ok);
 }
@@ -63,47 +65,29 @@ VG_METHOD(load) {
 VG_METHOD(load_bytes) {
     vg_call c;
     verve_brain* fresh = NULL;
-    godot_pool_byte_array bytes;
-    godot_pool_byte_array_read_access* read;
     int ok;
     VG_UNUSED;
-    if (!vg_begin_brain(&c, user_data, "load_bytes", argc, argv, 1, 1) ||
-        !vg_arg_type(&c, 0, "data", GODOT_VARIANT_TYPE_POOL_BYTE_ARRAY))
-        return vg_variant_bool(0);
-    bytes = vg_core->godot_variant_as_pool_byte_array(argv[0]);
-    read = vg_core->godot_pool_byte_array_read(&bytes);
-    ok = vg_check(&c, verve_brain_load_memory(vg_core->godot_pool_byte_array_read_access_ptr(read),
-                                              (size_t)vg_core->godot_pool_byte_array_size(&bytes), &fresh));
-    vg_core->godot_pool_byte_array_read_access_destroy(read);
-    vg_core->godot_pool_byte_array_destroy(&bytes);
+    ok = vg_begin_brain(&c, user_data, "load_bytes", argc, argv, 1, 1) && vg_with_bytes(&c, 0, vg_load_memory, &fresh);
     if (ok) vg_adopt(user_data, fresh);
     return vg_variant_bool(ok);
 }
 
 /* save and save_binary. */
-static godot_variant vg_save_file(void* user_data, const char* method, int argc, godot_variant** argv,
-                                  verve_result (*save)(const verve_brain*, const char*)) {
+static godot_variant vg_save_file(void* user_data, const char* method, int argc, godot_variant** argv, vg_path_fn save) {
     vg_call c;
     verve_brain* b;
-    godot_char_string path;
-    int ok;
-    if (!vg_begin_brain(&c, user_data, method, argc, argv, 1, 1) || !vg_brain_handle(&c, user_data, &b) ||
-        !vg_arg_type(&c, 0, "path", GODOT_VARIANT_TYPE_STRING))
-        return vg_variant_bool(0);
-    path = vg_utf8(argv[0], 1);
-    ok = vg_check(&c, save(b, vg_core->godot_char_string_get_data(&path)));
-    vg_core->godot_char_string_destroy(&path);
-    return vg_variant_bool(ok);
+    return vg_variant_bool(vg_begin_brain(&c, user_data, method, argc, argv, 1, 1) &&
+                           vg_brain_handle(&c, user_data, &b) && vg_with_path(&c, 0, save, b));
 }
 
 VG_METHOD(save) {
     VG_UNUSED;
-    return vg_save_file(user_data, "save", argc, argv, verve_brain_save);
+    return vg_save_file(user_data, "save", argc, argv, vg_save_xml_file);
 }
 
 VG_METHOD(save_binary) {
     VG_UNUSED;
-    return vg_save_file(user_data, "save_binary", argc, argv, verve_brain_save_binary);
+    return vg_save_file(user_data, "save_binary", argc, argv, vg_save_binary_file);
 }
 
 static verve_result vg_save_xml_memory(const void* brain, void* buffer, size_t* size) {
