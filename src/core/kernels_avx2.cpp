@@ -121,19 +121,18 @@ void rowSums(const float* weights, std::uint32_t stride, const ActiveFeature* ph
     for (std::uint32_t c = 0; c < columns; c += 8) {
         // Up to 8 columns per pass; a masked load never reads past a row's last column.
         const __m256i mask = _mm256_cmpgt_epi32(_mm256_set1_epi32(static_cast<int>(columns - c)), laneNumbers);
-        const float* base = weights + c;
         // Four accumulators: an FMA's latency is four adds long.
         __m256 acc[4] = {_mm256_setzero_ps(), _mm256_setzero_ps(), _mm256_setzero_ps(), _mm256_setzero_ps()};
         std::size_t i = 0;
         for (; i + 4 <= n; i += 4) {
             askAhead(ahead, kAheadPerBlock);
             for (std::size_t j = 0; j < 4; ++j) {
-                const __m256 w = _mm256_maskload_ps(base + std::size_t(phi[i + j].index) * stride, mask);
+                const __m256 w = _mm256_maskload_ps(weights + (std::size_t(phi[i + j].index) * stride + c), mask);
                 acc[j] = _mm256_fmadd_ps(w, _mm256_set1_ps(phi[i + j].activation), acc[j]);
             }
         }
         for (; i < n; ++i) {
-            const __m256 w = _mm256_maskload_ps(base + std::size_t(phi[i].index) * stride, mask);
+            const __m256 w = _mm256_maskload_ps(weights + (std::size_t(phi[i].index) * stride + c), mask);
             acc[0] = _mm256_fmadd_ps(w, _mm256_set1_ps(phi[i].activation), acc[0]);
         }
         _mm256_maskstore_ps(sums + c, mask, _mm256_add_ps(_mm256_add_ps(acc[0], acc[1]), _mm256_add_ps(acc[2], acc[3])));

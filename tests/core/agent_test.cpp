@@ -2,6 +2,7 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <limits>
 #include <vector>
@@ -189,6 +190,20 @@ TEST(Agent, LearningOffActsButLearnsAndAllocatesNothing) {
     EXPECT_EQ(before.weights, after.weights);
     EXPECT_EQ(before.featureKeys.size(), after.featureKeys.size());
     EXPECT_FALSE(agent.learning());
+}
+
+// Learning off from the start: no RBF and no weight row exists, so every action's sum is over an
+// empty table. (fuzz_calls found the AVX2 kernel's second 8-column pass offsetting the empty
+// table's null pointer; only clang's UBSan sees that, so the input is a seed in corpus/calls/.)
+TEST(Agent, ActsWithNoRbfsAtAll) {
+    AgentDescriptor d = continuousAgent();
+    d.numActions = 12;  // more columns than one 8-wide pass
+    Agent agent(d);
+    agent.setLearning(false);
+    std::vector<bool> chosen(d.numActions, false);
+    for (const std::uint32_t a : actionsOf(agent, 400)) chosen.at(a) = true;
+    EXPECT_EQ(agent.snapshot().featureKeys.size(), 0u);
+    EXPECT_EQ(std::count(chosen.begin(), chosen.end(), true), 12);  // all equal values: every action is tried
 }
 
 TEST(Agent, InvalidDescriptorsAreRefused) {

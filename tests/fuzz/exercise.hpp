@@ -15,10 +15,14 @@ namespace verve_fuzz {
     } while (0)
 
 // Saves to memory with the two-call pattern, loads the bytes back and checks the copy saves
-// to the same bytes. Returns the loaded copy (or NULL if the save was refused).
-inline verve_agent* roundTrip(const verve_agent* agent) {
+// to the same bytes. Returns the loaded copy (or NULL if the save was refused). Adds the bytes it
+// wrote and read to *work: four saves and a load of the agent's text.
+inline verve_agent* roundTrip(const verve_agent* agent, size_t* work = nullptr) {
     size_t size = 0;
-    if (verve_agent_save_memory(agent, nullptr, &size) != VERVE_OK) return nullptr;
+    const verve_result sized = verve_agent_save_memory(agent, nullptr, &size);
+    if (work != nullptr) *work += size;
+    if (sized != VERVE_OK) return nullptr;
+    if (work != nullptr) *work += 4 * size;
     std::vector<char> bytes(size);
     size_t written = size;
     VERVE_FUZZ_CHECK(verve_agent_save_memory(agent, bytes.data(), &written) == VERVE_OK && written == size);
