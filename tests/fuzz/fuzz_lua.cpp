@@ -5,6 +5,7 @@
 #include <fuzzer/FuzzedDataProvider.h>
 
 #include <cmath>
+#include <cstdlib>
 #include <string>
 
 extern "C" {
@@ -119,6 +120,18 @@ struct Driver {
         lua_pushcfunction(L, luaopen_verve);
         if (lua_pcall(L, 0, 1, 0) != LUA_OK) return;
         const int module = lua_gettop(L);
+        // A host's RBF budget, as in fuzz_calls: a descriptor table without max_rbfs gets 256, so
+        // that an accepted agent is quick to build and save and a slow input is a hang (a full
+        // lattice of a million RBFs, which the default budget allows, takes 0.7 s to save without
+        // ASan). The size limits themselves are fuzz_calls' and the unit tests' to check.
+        if (luaL_dostring(L, "return function(verve) local agent = verve.agent\n"
+                             "  verve.agent = function(d, ...)\n"
+                             "    if type(d) == 'table' and rawget(d, 'max_rbfs') == nil then rawset(d, 'max_rbfs', 256) end\n"
+                             "    return agent(d, ...) end end") != LUA_OK) {
+            std::abort();
+        }
+        lua_pushvalue(L, module);
+        lua_call(L, 1, 0);
         // A valid agent first, most of the time, so methods reach deep paths.
         if (in.ConsumeBool()) {
             luaL_dostring(L, "return function(verve) return verve.agent{continuous={{},{circular=true}}, actions=3} end");
