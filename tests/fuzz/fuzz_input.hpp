@@ -95,13 +95,14 @@ inline Observation anyObservation(FuzzedDataProvider& in, const verve_agent_desc
     const bool wrongCounts = in.ConsumeIntegralInRange<int>(0, 15) == 0;
     o.numDiscrete = wrongCounts ? in.ConsumeIntegralInRange<uint32_t>(0, VERVE_MAX_DISCRETE_SENSORS + 4) : d.num_discrete_sensors;
     o.numContinuous = wrongCounts ? in.ConsumeIntegralInRange<uint32_t>(0, VERVE_MAX_CONTINUOUS_SENSORS + 4) : d.num_continuous_sensors;
-    for (uint32_t i = 0; i < VERVE_MAX_DISCRETE_SENSORS + 4; ++i) {
+    // Values only for the counts passed (the input's bytes are few; the rest of the arrays stay 0).
+    for (uint32_t i = 0; i < o.numDiscrete; ++i) {
         const uint32_t values = i < VERVE_MAX_DISCRETE_SENSORS ? d.discrete_sensor_values[i] : 1;
         o.discrete[i] = in.ConsumeIntegralInRange<int>(0, 31) == 0
                             ? in.ConsumeIntegral<int32_t>()
                             : static_cast<int32_t>(in.ConsumeIntegralInRange<uint32_t>(0, values > 0 ? values - 1 : 0));
     }
-    for (float& v : o.continuous) v = anyFloat(in, -1.2f, 1.2f);
+    for (uint32_t i = 0; i < o.numContinuous; ++i) o.continuous[i] = anyFloat(in, -1.2f, 1.2f);
     return o;
 }
 

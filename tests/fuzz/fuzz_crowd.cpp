@@ -1,0 +1,320 @@
+// libFuzzer target: crowds. Fuzzed descriptors make brains and agents of their own; a crowd lists
+// bodies and agents in any order, repeats included, and is stepped by verve_batch_update on
+// Verve's pool or on a host's job system (ranges run in reverse), with packed or spaced
+// observations, bad values, wrong totals and NULL entries, between bodies made, handles destroyed
+// and brains saved. The same calls run on a twin world built alike, its batch steps done as single
+// updates in array order. Checks the promises of verve_c.h: a refused batch changes no member and
+// sets an error; an accepted one acts exactly as the single updates (the same actions, and the
+// same saves at the end); a brain's save reloads, as a brain and as an agent, to the same bytes.
+#include <algorithm>
+#include <cstdint>
+#include <string>
+#include <vector>
+
+#include "exercise.hpp"
+
+namespace {
+
+using verve_fuzz::anyFloat;
+
+constexpr size_t kMaxMembers = 10;
+constexpr size_t kSaveBytesPerInput = size_t{8} << 20;  // as in fuzz_calls: saves cost time by size
+
+// A host job system on the calling thread: the task's ranges in reverse order, each given the
+// worker index its range would have on a host with three workers.
+void* VERVE_CALL enqueueReversed(verve_task_fn task, uint32_t count, uint32_t minRange, void* taskContext, void*) {
+    const uint32_t range = std::max<uint32_t>(minRange, 1);
+    const uint32_t ranges = (count + range - 1) / range;
+    for (uint32_t r = ranges; r-- > 0;) task(r * range, std::min(count, (r + 1) * range), r % 3, taskContext);
+    return nullptr;  // ran inline: finish_task is not called
+}
+void VERVE_CALL finishNothing(void*, void*) {}
+
+// Made once: starting threads per input would be most of the run's time.
+verve_batch* batch(bool host) {
+    static verve_batch* const pool = [] {
+        verve_batch_desc d;
+        verve_batch_desc_default(&d);
+        d.worker_count = 2;
+        verve_batch* b = nullptr;
+        VERVE_FUZZ_CHECK(verve_batch_create(&d, &b) == VERVE_OK);
+        return b;
+    }();
+    static verve_batch* const hosted = [] {
+        verve_batch_desc d;
+        verve_batch_desc_default(&d);
+        d.worker_count = 3;
+        d.enqueue_task = enqueueReversed;
+        d.finish_task = finishNothing;
+        verve_batch* b = nullptr;
+        VERVE_FUZZ_CHECK(verve_batch_create(&d, &b) == VERVE_OK);
+        return b;
+    }();
+    return host ? hosted : pool;
+}
+
+uint64_t stepsOf(const verve_agent* agent) {
+    verve_agent_stats s{};
+    s.struct_size = sizeof s;
+    VERVE_FUZZ_CHECK(verve_agent_get_stats(agent, &s) == VERVE_OK);
+    return s.steps;
+}
+
+std::string saved(const verve_agent* agent) {
+    size_t size = 0;
+    VERVE_FUZZ_CHECK(verve_agent_save_memory(agent, nullptr, &size) == VERVE_OK);
+    std::string bytes(size, '\0');
+    VERVE_FUZZ_CHECK(verve_agent_save_memory(agent, bytes.data(), &size) == VERVE_OK);
+    return bytes;
+}
+
+// Brains and members (bodies or agents of their own); one of two twins.
+struct World {
+    std::vector<verve_brain*> brains;
+    std::vector<verve_agent*> members;
+
+    ~World() {
+        for (verve_agent* a : members) verve_agent_destroy(a);
+        for (verve_brain* b : brains) verve_brain_destroy(b);
+    }
+    std::vector<uint64_t> steps() const {
+        std::vector<uint64_t> s;
+        for (const verve_agent* a : members) s.push_back(stepsOf(a));
+        return s;
+    }
+};
+
+// One batch step's arguments, read from the input once for both twins.
+struct Step {
+    std::vector<size_t> entries;  // member indices; kMaxMembers stands for a NULL entry
+    std::vector<float> rewards;
+    std::vector<int32_t> discrete;
+    std::vector<float> continuous;
+    std::vector<uint32_t> discreteOffsets, continuousOffsets;  // empty: packed
+    uint32_t discreteTotal = 0, continuousTotal = 0;
+    std::vector<uint32_t> numDiscrete, numContinuous;  // each entry's sensors (its shape, whatever was packed)
+    float dt = 0.1f;
+    bool host = false;
+};
+
+// Mostly what a working game passes, so that batches are accepted and compared with the twin's
+// single updates; now and then anything (NaN, infinities, huge, wrong counts), so that refusals are.
+float mostlyGood(FuzzedDataProvider& in, float lo, float hi) {
+    return in.ConsumeIntegralInRange<int>(0, 15) == 0 ? anyFloat(in, lo, hi) : in.ConsumeFloatingPointInRange<float>(lo, hi);
+}
+
+verve_fuzz::Observation mostlyGood(FuzzedDataProvider& in, const verve_agent_desc& d) {
+    if (in.ConsumeIntegralInRange<int>(0, 15) == 0) return verve_fuzz::anyObservation(in, d);
+    verve_fuzz::Observation o;
+    o.numDiscrete = d.num_discrete_sensors;
+    o.numContinuous = d.num_continuous_sensors;
+    for (uint32_t i = 0; i < o.numDiscrete; ++i) {
+        o.discrete[i] = static_cast<int32_t>(in.ConsumeIntegralInRange<uint32_t>(0, d.discrete_sensor_values[i] - 1));
+    }
+    for (uint32_t i = 0; i < o.numContinuous; ++i) o.continuous[i] = in.ConsumeFloatingPointInRange<float>(-1.2f, 1.2f);
+    return o;
+}
+
+Step readStep(FuzzedDataProvider& in, const World& world) {
+    Step s;
+    s.dt = mostlyGood(in, 0.001f, 1.0f);
+    s.host = in.ConsumeBool();
+    const size_t n = in.ConsumeIntegralInRange<size_t>(0, 12);
+    const bool spaced = in.ConsumeBool();
+    for (size_t i = 0; i < n && !world.members.empty(); ++i) {
+        const bool null = in.ConsumeIntegralInRange<int>(0, 31) == 0;
+        const size_t m = null ? kMaxMembers : in.ConsumeIntegralInRange<size_t>(0, world.members.size() - 1);
+        verve_agent_desc d;
+        verve_agent_desc_init(&d, sizeof d);
+        if (!null) VERVE_FUZZ_CHECK(verve_agent_get_desc(world.members[m], &d) == VERVE_OK);
+        const verve_fuzz::Observation o = mostlyGood(in, d);
+        s.entries.push_back(m);
+        s.numDiscrete.push_back(d.num_discrete_sensors);
+        s.numContinuous.push_back(d.num_continuous_sensors);
+        s.rewards.push_back(mostlyGood(in, -1.5f, 1.5f));
+        if (spaced) {  // a gap before each agent's values, as in a struct of arrays with other fields
+            s.discrete.resize(s.discrete.size() + in.ConsumeIntegralInRange<size_t>(0, 2), -7);
+            s.continuous.resize(s.continuous.size() + in.ConsumeIntegralInRange<size_t>(0, 2), -7.0f);
+            s.discreteOffsets.push_back(static_cast<uint32_t>(s.discrete.size()));
+            s.continuousOffsets.push_back(static_cast<uint32_t>(s.continuous.size()));
+        }
+        s.discrete.insert(s.discrete.end(), o.discrete, o.discrete + std::min<uint32_t>(o.numDiscrete, VERVE_MAX_DISCRETE_SENSORS + 4));
+        s.continuous.insert(s.continuous.end(), o.continuous,
+                            o.continuous + std::min<uint32_t>(o.numContinuous, VERVE_MAX_CONTINUOUS_SENSORS + 4));
+    }
+    s.discreteTotal = static_cast<uint32_t>(s.discrete.size());
+    s.continuousTotal = static_cast<uint32_t>(s.continuous.size());
+    switch (in.ConsumeIntegralInRange<int>(0, 15)) {  // now and then a longer buffer, a short total, an offset anywhere
+        case 0: s.discreteTotal += in.ConsumeIntegralInRange<uint32_t>(1, 3); break;
+        case 1: s.continuousTotal = in.ConsumeIntegralInRange<uint32_t>(0, s.continuousTotal); break;
+        case 2:
+            if (!s.continuousOffsets.empty()) s.continuousOffsets.back() = in.ConsumeIntegral<uint32_t>();
+            break;
+        default: break;
+    }
+    // The arrays hold what the totals claim (-7 past the packed values).
+    s.discrete.resize(std::max<size_t>(s.discrete.size(), s.discreteTotal), -7);
+    s.continuous.resize(std::max<size_t>(s.continuous.size(), s.continuousTotal), -7.0f);
+    return s;
+}
+
+// The batch on world a; the same step on its twin b as single updates in array order.
+void batchStep(const Step& s, World& a, World& b) {
+    std::vector<verve_agent*> crowd;
+    for (size_t m : s.entries) crowd.push_back(m == kMaxMembers ? nullptr : a.members[m]);
+    const uint32_t n = static_cast<uint32_t>(crowd.size());
+    std::vector<uint32_t> actions(n, UINT32_MAX);
+    std::vector<verve_result> results(n, VERVE_ERROR_INTERNAL);
+    const std::vector<uint64_t> before = a.steps();
+    const verve_result r = verve_batch_update(
+        batch(s.host), crowd.data(), n, s.rewards.data(), s.discrete.data(),
+        s.discreteOffsets.empty() ? nullptr : s.discreteOffsets.data(), s.discreteTotal, s.continuous.data(),
+        s.continuousOffsets.empty() ? nullptr : s.continuousOffsets.data(), s.continuousTotal, s.dt, actions.data(),
+        results.data());
+    VERVE_FUZZ_CHECK((r == VERVE_OK) == (verve_last_error()[0] == '\0'));
+    if (r != VERVE_OK) {
+        VERVE_FUZZ_CHECK(a.steps() == before);
+        return;
+    }
+    // Each agent read its own number of values (a packed observation of another count shifts the
+    // ones after it: the batch cannot see that), at its offset or after the agent before it.
+    uint32_t atDiscrete = 0, atContinuous = 0;
+    for (uint32_t i = 0; i < n; ++i) {
+        VERVE_FUZZ_CHECK(results[i] == VERVE_OK);
+        if (!s.discreteOffsets.empty()) atDiscrete = s.discreteOffsets[i];
+        if (!s.continuousOffsets.empty()) atContinuous = s.continuousOffsets[i];
+        uint32_t action = UINT32_MAX;
+        // An agent that reads no values may have any offset: no pointer is formed from it.
+        const int32_t* discrete = s.numDiscrete[i] == 0 ? nullptr : s.discrete.data() + atDiscrete;
+        const float* continuous = s.numContinuous[i] == 0 ? nullptr : s.continuous.data() + atContinuous;
+        VERVE_FUZZ_CHECK(verve_agent_update(b.members[s.entries[i]], s.rewards[i], discrete, s.numDiscrete[i], continuous,
+                                            s.numContinuous[i], s.dt, &action) == VERVE_OK);
+        VERVE_FUZZ_CHECK(action == actions[i]);
+        atDiscrete += s.numDiscrete[i];
+        atContinuous += s.numContinuous[i];
+    }
+}
+
+// A brain's save (XML or binary) loads as a brain and as an agent, and the brain saves the same bytes.
+void brainRoundTrip(const verve_brain* brain, bool binary, size_t& saveBytes) {
+    auto save = binary ? verve_brain_save_memory_binary : verve_brain_save_memory;
+    size_t size = 0;
+    VERVE_FUZZ_CHECK(save(brain, nullptr, &size) == VERVE_OK);
+    saveBytes += 4 * size;
+    std::string bytes(size, '\0');
+    VERVE_FUZZ_CHECK(save(brain, bytes.data(), &size) == VERVE_OK);
+    verve_brain* copy = nullptr;
+    VERVE_FUZZ_CHECK(verve_brain_load_memory(bytes.data(), bytes.size(), &copy) == VERVE_OK);
+    size_t again = 0;
+    VERVE_FUZZ_CHECK(save(copy, nullptr, &again) == VERVE_OK && again == size);
+    std::string bytesAgain(again, '\0');
+    VERVE_FUZZ_CHECK(save(copy, bytesAgain.data(), &again) == VERVE_OK && bytesAgain == bytes);
+    verve_agent* asAgent = nullptr;
+    VERVE_FUZZ_CHECK(verve_agent_load_memory(bytes.data(), bytes.size(), &asAgent) == VERVE_OK);
+    verve_agent_destroy(asAgent);
+    verve_brain_destroy(copy);
+}
+
+// A member in both worlds: a body of brain k, or (past the brains) an agent of descriptor k.
+void addMember(World& a, World& b, const std::vector<verve_agent_desc>& own, size_t k) {
+    if (a.members.size() >= kMaxMembers) return;
+    auto make = [&](World& w, verve_agent** out) {
+        return k < w.brains.size() ? verve_brain_create_body(w.brains[k], out) : verve_agent_create(&own[k - w.brains.size()], out);
+    };
+    verve_agent *x = nullptr, *y = nullptr;
+    if (make(a, &x) != VERVE_OK) {
+        VERVE_FUZZ_CHECK(x == nullptr && verve_last_error()[0] != '\0');
+        return;
+    }
+    VERVE_FUZZ_CHECK(make(b, &y) == VERVE_OK);
+    a.members.push_back(x);
+    b.members.push_back(y);
+}
+
+}  // namespace
+
+extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size) {
+    FuzzedDataProvider in(data, size);
+    World a, b;
+    // Up to two brains and two descriptors for agents of their own (refused descriptors make none).
+    std::vector<verve_agent_desc> own;
+    for (int i = 0, brains = in.ConsumeIntegralInRange<int>(0, 2); i < brains; ++i) {
+        const verve_agent_desc d = verve_fuzz::anyDescriptor(in);
+        verve_brain *x = nullptr, *y = nullptr;
+        if (verve_brain_create(&d, &x) != VERVE_OK) {
+            VERVE_FUZZ_CHECK(x == nullptr && verve_last_error()[0] != '\0');
+            continue;
+        }
+        VERVE_FUZZ_CHECK(verve_brain_create(&d, &y) == VERVE_OK);
+        a.brains.push_back(x);
+        b.brains.push_back(y);
+    }
+    for (int i = 0, kinds = in.ConsumeIntegralInRange<int>(a.brains.empty() ? 1 : 0, 2); i < kinds; ++i) {
+        own.push_back(verve_fuzz::anyDescriptor(in));
+    }
+    // A body of each brain and an agent of each descriptor to start with (more come from case 0).
+    for (size_t k = 0; k < a.brains.size() + own.size(); ++k) addMember(a, b, own, k);
+    size_t saveBytes = 0;
+    for (int call = 0; call < 32 && in.remaining_bytes() > 0; ++call) {
+        switch (in.ConsumeIntegralInRange<int>(0, 11)) {
+            case 0:
+                addMember(a, b, own, in.ConsumeIntegralInRange<size_t>(0, a.brains.size() + own.size() - 1));
+                break;
+            case 1:
+            case 2:
+            case 3:
+            case 4:
+            case 5:
+            case 6:
+                batchStep(readStep(in, a), a, b);
+                break;
+            case 7: {  // the end of a trial for one member, terminal or cut off, in both worlds
+                if (a.members.empty()) break;
+                const size_t m = in.ConsumeIntegralInRange<size_t>(0, a.members.size() - 1);
+                const float reward = anyFloat(in, -1.5f, 1.5f);
+                auto end = in.ConsumeBool() ? verve_agent_end_episode : verve_agent_truncate_episode;
+                VERVE_FUZZ_CHECK(end(a.members[m], reward) == end(b.members[m], reward));
+                break;
+            }
+            case 8: {  // a member leaves (a body's brain lives on in its other bodies and its handle)
+                if (a.members.empty()) break;
+                const size_t m = in.ConsumeIntegralInRange<size_t>(0, a.members.size() - 1);
+                verve_agent_destroy(a.members[m]);
+                verve_agent_destroy(b.members[m]);
+                a.members.erase(a.members.begin() + static_cast<std::ptrdiff_t>(m));
+                b.members.erase(b.members.begin() + static_cast<std::ptrdiff_t>(m));
+                break;
+            }
+            case 9: {  // a brain's handle goes (its bodies keep what they share); no more bodies of it
+                if (a.brains.empty()) break;
+                const size_t k = in.ConsumeIntegralInRange<size_t>(0, a.brains.size() - 1);
+                verve_brain_destroy(a.brains[k]);
+                verve_brain_destroy(b.brains[k]);
+                a.brains.erase(a.brains.begin() + static_cast<std::ptrdiff_t>(k));
+                b.brains.erase(b.brains.begin() + static_cast<std::ptrdiff_t>(k));
+                if (a.brains.empty() && own.empty()) own.push_back(verve_fuzz::anyDescriptor(in));
+                break;
+            }
+            case 10:
+                if (a.brains.empty() || saveBytes >= kSaveBytesPerInput) break;
+                brainRoundTrip(a.brains[in.ConsumeIntegralInRange<size_t>(0, a.brains.size() - 1)], in.ConsumeBool(),
+                               saveBytes);
+                break;
+            case 11: {  // learning on or off for one member
+                if (a.members.empty()) break;
+                const size_t m = in.ConsumeIntegralInRange<size_t>(0, a.members.size() - 1);
+                const int on = in.ConsumeIntegralInRange<int>(0, 1);
+                VERVE_FUZZ_CHECK(verve_agent_set_learning(a.members[m], on) == VERVE_OK);
+                VERVE_FUZZ_CHECK(verve_agent_set_learning(b.members[m], on) == VERVE_OK);
+                break;
+            }
+        }
+    }
+    // The batch's world and the single updates' world end the same, member by member.
+    for (size_t m = 0; m < a.members.size() && saveBytes < kSaveBytesPerInput; ++m) {
+        const std::string x = saved(a.members[m]);
+        saveBytes += 4 * x.size();
+        VERVE_FUZZ_CHECK(x == saved(b.members[m]));
+    }
+    return 0;
+}
