@@ -317,10 +317,15 @@ static void lv_push_desc(lua_State* L, const verve_agent_desc* d) {
 
 /* obs.<key> (a list of at most max numbers) into the stack; returns the count. Integers are
  * shifted to 0-based when `discrete` is set. */
-static uint32_t lv_read_obs_list(lua_State* L, int obs, const char* fn, const char* key, int discrete,
+static uint32_t lv_read_obs_list(lua_State* L, int obs, const char* fn, const char* key, int discrete, int raw,
                                  lv_obs* o) {
     uint32_t n, i, max = discrete ? VERVE_MAX_DISCRETE_SENSORS : VERVE_MAX_CONTINUOUS_SENSORS;
-    lua_getfield(L, obs, key);
+    if (raw) {
+        lua_pushstring(L, key);
+        lua_rawget(L, obs);
+    } else {
+        lua_getfield(L, obs, key);
+    }
     if (lua_isnil(L, -1)) {
         lua_pop(L, 1);
         return 0;
@@ -350,15 +355,16 @@ static uint32_t lv_read_obs_list(lua_State* L, int obs, const char* fn, const ch
 }
 
 /* {discrete = {...}, continuous = {...}} at idx; nil means no sensors. Sizes and ranges are
- * the library's to check, so its message reaches the script. */
-static void lv_read_obs(lua_State* L, int idx, const char* fn, lv_obs* o) {
+ * the library's to check, so its message reaches the script. Raw: without metamethods, so that no
+ * Lua code runs while it reads (the lists' elements are always read raw). */
+static void lv_read_obs(lua_State* L, int idx, const char* fn, int raw, lv_obs* o) {
     o->n_discrete = o->n_continuous = 0;
     if (lua_isnoneornil(L, idx)) return;
     if (!lua_istable(L, idx))
         luaL_error(L, "verve: %s: the observation must be a table {discrete = {...}, continuous = {...}} (got %s)",
                    fn, luaL_typename(L, idx));
-    o->n_discrete = lv_read_obs_list(L, idx, fn, "discrete", 1, o);
-    o->n_continuous = lv_read_obs_list(L, idx, fn, "continuous", 0, o);
+    o->n_discrete = lv_read_obs_list(L, idx, fn, "discrete", 1, raw, o);
+    o->n_continuous = lv_read_obs_list(L, idx, fn, "continuous", 0, raw, o);
 }
 
 /* ---- module functions ------------------------------------------------------------------- */
@@ -431,7 +437,7 @@ static int lv_update(lua_State* L) {
     luaL_checkudata(L, 1, LV_AGENT_MT);
     reward = lv_to_float(luaL_checknumber(L, 2));
     dt = lv_to_float(luaL_checknumber(L, 4));
-    lv_read_obs(L, 3, "update", &o);
+    lv_read_obs(L, 3, "update", 0, &o);
     /* Every Lua input is read before the handle is taken: a metamethod may close the agent. */
     if (lua_isnoneornil(L, 5)) {
         r = verve_agent_update(lv_open_agent(L), reward, o.discrete, o.n_discrete, o.continuous, o.n_continuous, dt,
@@ -641,7 +647,7 @@ static int lv_sample_values(lua_State* L) {
         base.n_discrete = d.num_discrete_sensors;
         base.n_continuous = d.num_continuous_sensors;
     } else {
-        lv_read_obs(L, 3, "sample_values", &base);
+        lv_read_obs(L, 3, "sample_values", 0, &base);
     }
     n0 = axes[0].samples;
     n1 = n_axes == 2 ? axes[1].samples : 1;
@@ -889,7 +895,8 @@ static int lv_batch_update(lua_State* L) {
         b->rewards[i] = lv_to_float(lua_tonumber(L, -1));
         lua_pop(L, 1);
         lua_rawgeti(L, 4, (int)i + 1);
-        lv_read_obs(L, lua_gettop(L), "update", &o);
+        /* Raw: a metamethod could close an agent already listed, or the batch and its arrays. */
+        lv_read_obs(L, lua_gettop(L), "update", 1, &o);
         lua_pop(L, 1);
         memcpy(b->discrete + nd, o.discrete, o.n_discrete * sizeof *o.discrete);
         memcpy(b->continuous + nc, o.continuous, o.n_continuous * sizeof *o.continuous);

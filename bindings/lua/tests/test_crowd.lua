@@ -1,6 +1,6 @@
 -- Many agents from Lua: a batch gives the same actions as agent:update in order, bodies of one
 -- brain share what they learn, a brain's save (XML or binary) round-trips, bad input refuses the
--- whole batch.
+-- whole batch, and no Lua code runs while a batch reads its arguments.
 local T = require "helpers"
 local verve = require "verve"
 
@@ -64,6 +64,22 @@ T.check("bad input anywhere refuses the whole batch", function()
   T.expect_error("unknown batch field", verve.batch, { threads = 2 })
   batch:close()
   T.expect_error("the batch is closed", batch.update, batch, agents, rewards, obs, 0.1)
+end)
+
+T.check("a batch reads observations raw: no metamethod can close an agent or the batch mid-call", function()
+  local agents = crowd()
+  local batch = verve.batch { workers = 1 }
+  local obs, rewards = observations(agents, 1)
+  local calls = 0
+  local closer = { __index = function() calls = calls + 1; agents[1]:close(); batch:close() end }
+  -- obs[2]'s values behind __index: read raw, it has none, which the library refuses (agent 1 has 2)
+  local fields = obs[2]
+  obs[2] = setmetatable({}, { __index = function(_, k) closer.__index(); return fields[k] end })
+  T.expect_library_error("update", batch.update, batch, agents, rewards, obs, 0.1)
+  assert(calls == 0, "a metamethod ran inside batch:update")
+  obs[2] = fields
+  assert(#batch:update(agents, rewards, obs, 0.1) == #agents, "agents and batch still open")
+  batch:close()
 end)
 
 T.check("bodies of one brain share what they learn; its save loads as a brain and as an agent", function()
