@@ -241,6 +241,15 @@ void addMember(World& a, World& b, const std::vector<verve_agent_desc>& own, siz
     b.members.push_back(y);
 }
 
+// Destroys handle i of a world's list and its twin, and takes them off both lists.
+template <typename Handle>
+void destroyIn(std::vector<Handle*>& a, std::vector<Handle*>& b, size_t i, void(VERVE_CALL* destroy)(Handle*)) {
+    destroy(a[i]);
+    destroy(b[i]);
+    a.erase(a.begin() + static_cast<std::ptrdiff_t>(i));
+    b.erase(b.begin() + static_cast<std::ptrdiff_t>(i));
+}
+
 }  // namespace
 
 extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size) {
@@ -288,20 +297,12 @@ extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size) {
             }
             case 8: {  // a member leaves (a body's brain lives on in its other bodies and its handle)
                 if (a.members.empty()) break;
-                const size_t m = in.ConsumeIntegralInRange<size_t>(0, a.members.size() - 1);
-                verve_agent_destroy(a.members[m]);
-                verve_agent_destroy(b.members[m]);
-                a.members.erase(a.members.begin() + static_cast<std::ptrdiff_t>(m));
-                b.members.erase(b.members.begin() + static_cast<std::ptrdiff_t>(m));
+                destroyIn(a.members, b.members, in.ConsumeIntegralInRange<size_t>(0, a.members.size() - 1), verve_agent_destroy);
                 break;
             }
             case 9: {  // a brain's handle goes (its bodies keep what they share); no more bodies of it
                 if (a.brains.empty()) break;
-                const size_t k = in.ConsumeIntegralInRange<size_t>(0, a.brains.size() - 1);
-                verve_brain_destroy(a.brains[k]);
-                verve_brain_destroy(b.brains[k]);
-                a.brains.erase(a.brains.begin() + static_cast<std::ptrdiff_t>(k));
-                b.brains.erase(b.brains.begin() + static_cast<std::ptrdiff_t>(k));
+                destroyIn(a.brains, b.brains, in.ConsumeIntegralInRange<size_t>(0, a.brains.size() - 1), verve_brain_destroy);
                 if (a.brains.empty() && own.empty()) own.push_back(crowdDescriptor(in));
                 break;
             }
