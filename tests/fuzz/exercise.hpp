@@ -15,8 +15,8 @@ namespace verve_fuzz {
     } while (0)
 
 // Saves to memory with the two-call pattern, loads the bytes back and checks the copy saves
-// to the same bytes. Returns the loaded copy (or NULL if the save was refused). Adds the bytes it
-// wrote and read to *work: four saves and a load of the agent's text.
+// to the same bytes. Returns the loaded copy (or NULL if the save was refused). Adds its cost to
+// *work, in bytes of save text: the size query's, then four more sizes for the saves and the load.
 inline verve_agent* roundTrip(const verve_agent* agent, size_t* work = nullptr) {
     size_t size = 0;
     const verve_result sized = verve_agent_save_memory(agent, nullptr, &size);
