@@ -3,6 +3,7 @@
 // denormals, huge counts, wrong sizes), so every check sits on the path of some input.
 #pragma once
 #include <cmath>
+#include <cstddef>
 #include <cstdint>
 #include <limits>
 
@@ -78,6 +79,10 @@ inline verve_agent_desc anyDescriptor(FuzzedDataProvider& in) {
     }
     const uint64_t weightBudget = 400000 / (row == 0 ? 1 : row);
     if (d.max_rbfs > weightBudget && (d.max_rbfs != UINT64_MAX || row > 64)) d.max_rbfs = weightBudget == 0 ? 1 : weightBudget;
+    // A struct_size that ends before max_rbfs (a host built against an older header) leaves the
+    // default budget of a million RBFs, and a full lattice that large takes seconds to build under
+    // ASan (fuzz_crowd: 14 s): such descriptors grow their RBFs where observations land instead.
+    if (d.struct_size < offsetof(verve_agent_desc, max_rbfs) + sizeof d.max_rbfs) d.rbf_allocation = VERVE_RBF_DYNAMIC;
     return d;
 }
 
