@@ -1,7 +1,8 @@
 // libFuzzer target: the Lua module's entry points (Lua 5.4), driven without a script. Each input
 // calls module functions and the methods of agents, brains and batches with arguments of any
 // type: numbers (NaN, huge), strings, nested tables, and tables whose __index closes the agent,
-// brain or batch mid-call (a use-after-free trap). A Lua error is the expected answer to bad arguments; a crash or sanitizer report is a bug.
+// brain or batch mid-call (a use-after-free trap). A Lua error is the expected answer to bad
+// arguments; a crash or sanitizer report is a bug.
 #include <fuzzer/FuzzedDataProvider.h>
 
 #include <cmath>
@@ -108,7 +109,8 @@ struct Driver {
         }
     }
 
-    // A table that looks like an observation but closes the agent (or the brain, or the batch) when read.
+    // A table that looks like an observation but closes the agent (or the brain or the batch) when
+    // read.
     void pushTrap() {
         lua_newtable(L);
         lua_newtable(L);
@@ -197,10 +199,9 @@ struct Driver {
         if (lua_pcall(L, 0, 1, 0) != LUA_OK) return;
         const int module = lua_gettop(L);
         // A host's RBF budget, as in fuzz_calls: a descriptor table without max_rbfs gets 256 (for
-        // an agent or a brain), so
-        // that an accepted agent is quick to build and save and a slow input is a hang (a full
-        // lattice of a million RBFs, which the default budget allows, takes 0.7 s to save without
-        // ASan). The size limits themselves are fuzz_calls' and the unit tests' to check.
+        // an agent or a brain), so that an accepted agent is quick to build and save and a slow
+        // input is a hang (a full lattice of a million RBFs, which the default budget allows, takes
+        // 0.7 s to save without ASan). The size limits are fuzz_calls' and the unit tests' to check.
         if (luaL_dostring(L, "return function(verve) for _, name in ipairs{'agent', 'brain'} do local make = verve[name]\n"
                              "  verve[name] = function(d, ...)\n"
                              "    if type(d) == 'table' and rawget(d, 'max_rbfs') == nil then rawset(d, 'max_rbfs', 256) end\n"
