@@ -55,12 +55,13 @@ private:
     FieldNaming naming_;
 };
 
-// The product of the value counts, saturating just above the limit (no overflow).
+// The product of the value counts, saturating just above the limit: checked before each multiply,
+// since a product past the limit can wrap (2^19 x 2^19 x 2^26 is 2^64, which is 0).
 std::uint64_t combinations(const AgentDescriptor& d) {
     std::uint64_t n = 1;
     for (auto c : d.discreteSensors) {
+        if (c != 0 && n > Limits::kMaxDiscreteCombinations / c) return Limits::kMaxDiscreteCombinations + 1;
         n *= c;
-        if (n > Limits::kMaxDiscreteCombinations) return Limits::kMaxDiscreteCombinations + 1;
     }
     return n;
 }

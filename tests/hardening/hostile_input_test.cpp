@@ -60,6 +60,10 @@ TEST(TotalSize, PerFieldLimitsNameTheCField) {
     d.discrete_sensor_values[2] = 1u << 30;
     d.planning = 0;
     expectCreateRefused(d, "discrete_sensor_values");  // 2^62 combinations
+    d.discrete_sensor_values[0] = 1u << 19;
+    d.discrete_sensor_values[1] = 1u << 19;
+    d.discrete_sensor_values[2] = 1u << 26;
+    expectCreateRefused(d, "discrete_sensor_values");  // 2^64, which wraps to 0 (found by fuzz_crowd)
     d = planningDesc();
     d.planning = 0;
     d.num_continuous_sensors = 4;
