@@ -59,12 +59,7 @@ extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size) {
     verve_agent_desc_init(&d, sizeof d);
     VERVE_FUZZ_CHECK(verve_agent_get_desc(agent, &d) == VERVE_OK);
 
-    // Saves cost time in proportion to the agent's size (the largest agent the descriptors allow
-    // writes ~4 MB of XML; a round trip of it takes ~0.25 s under ASan), and a sequence can ask for
-    // one at almost every call: past this many bytes saved or loaded, save calls are skipped, so
-    // that an input over the 1 s limit is a hang in the library, not a long list of saves.
-    constexpr size_t kSaveBytesPerInput = size_t{8} << 20;
-    size_t saveBytes = 0;
+    size_t saveBytes = 0;  // skips saves past verve_fuzz::kSaveBytesPerInput
     for (int call = 0; call < 64 && in.remaining_bytes() > 0; ++call) {
         const Visible before = visible(agent);
         verve_result r = VERVE_OK;
@@ -109,7 +104,7 @@ extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size) {
                 sampleValues(agent, d, in);
                 break;
             case 8: {
-                if (saveBytes >= kSaveBytesPerInput) break;
+                if (saveBytes >= verve_fuzz::kSaveBytesPerInput) break;
                 verve_agent* copy = verve_fuzz::roundTrip(agent, &saveBytes);
                 if (copy != nullptr && in.ConsumeBool()) {  // carry on with the reloaded copy
                     verve_agent_destroy(agent);
@@ -121,7 +116,7 @@ extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size) {
                 break;
             }
             case 9: {
-                if (saveBytes >= kSaveBytesPerInput) break;
+                if (saveBytes >= verve_fuzz::kSaveBytesPerInput) break;
                 size_t size = in.ConsumeIntegralInRange<size_t>(0, 4096);
                 std::vector<char> small(size);
                 r = verve_agent_save_memory(agent, small.empty() ? nullptr : small.data(), &size);

@@ -8,7 +8,6 @@
 // same saves at the end); a brain's save reloads, as a brain and as an agent, to the same bytes.
 #include <algorithm>
 #include <cstdint>
-#include <string>
 #include <vector>
 
 #include "exercise.hpp"
@@ -18,7 +17,6 @@ namespace {
 using verve_fuzz::anyFloat;
 
 constexpr size_t kMaxMembers = 10;
-constexpr size_t kSaveBytesPerInput = size_t{8} << 20;  // as in fuzz_calls: saves cost time by size
 
 // A host job system on the calling thread: the task's ranges in reverse order, each given the
 // worker index its range would have on a host with three workers.
@@ -70,13 +68,6 @@ uint64_t stepsOf(const verve_agent* agent) {
     return s.steps;
 }
 
-std::string saved(const verve_agent* agent) {
-    size_t size = 0;
-    VERVE_FUZZ_CHECK(verve_agent_save_memory(agent, nullptr, &size) == VERVE_OK);
-    std::string bytes(size, '\0');
-    VERVE_FUZZ_CHECK(verve_agent_save_memory(agent, bytes.data(), &size) == VERVE_OK);
-    return bytes;
-}
 
 // Brains and members (bodies or agents of their own); one of two twins.
 struct World {
@@ -205,25 +196,6 @@ void batchStep(const Step& s, World& a, World& b) {
     }
 }
 
-// A brain's save (XML or binary) loads as a brain and as an agent, and the brain saves the same bytes.
-void brainRoundTrip(const verve_brain* brain, bool binary, size_t& saveBytes) {
-    auto save = binary ? verve_brain_save_memory_binary : verve_brain_save_memory;
-    size_t size = 0;
-    VERVE_FUZZ_CHECK(save(brain, nullptr, &size) == VERVE_OK);
-    saveBytes += 4 * size;
-    std::string bytes(size, '\0');
-    VERVE_FUZZ_CHECK(save(brain, bytes.data(), &size) == VERVE_OK);
-    verve_brain* copy = nullptr;
-    VERVE_FUZZ_CHECK(verve_brain_load_memory(bytes.data(), bytes.size(), &copy) == VERVE_OK);
-    size_t again = 0;
-    VERVE_FUZZ_CHECK(save(copy, nullptr, &again) == VERVE_OK && again == size);
-    std::string bytesAgain(again, '\0');
-    VERVE_FUZZ_CHECK(save(copy, bytesAgain.data(), &again) == VERVE_OK && bytesAgain == bytes);
-    verve_agent* asAgent = nullptr;
-    VERVE_FUZZ_CHECK(verve_agent_load_memory(bytes.data(), bytes.size(), &asAgent) == VERVE_OK);
-    verve_agent_destroy(asAgent);
-    verve_brain_destroy(copy);
-}
 
 // A member in both worlds: a body of brain k, or (past the brains) an agent of descriptor k.
 void addMember(World& a, World& b, const std::vector<verve_agent_desc>& own, size_t k) {
@@ -307,9 +279,9 @@ extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size) {
                 break;
             }
             case 10:
-                if (a.brains.empty() || saveBytes >= kSaveBytesPerInput) break;
-                brainRoundTrip(a.brains[in.ConsumeIntegralInRange<size_t>(0, a.brains.size() - 1)], in.ConsumeBool(),
-                               saveBytes);
+                if (a.brains.empty() || saveBytes >= verve_fuzz::kSaveBytesPerInput) break;
+                verve_fuzz::brainRoundTrip(a.brains[in.ConsumeIntegralInRange<size_t>(0, a.brains.size() - 1)],
+                                           in.ConsumeBool(), &saveBytes);
                 break;
             case 11: {  // learning on or off for one member
                 if (a.members.empty()) break;
@@ -322,10 +294,10 @@ extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size) {
         }
     }
     // The batch's world and the single updates' world end the same, member by member.
-    for (size_t m = 0; m < a.members.size() && saveBytes < kSaveBytesPerInput; ++m) {
-        const std::string x = saved(a.members[m]);
+    for (size_t m = 0; m < a.members.size() && saveBytes < verve_fuzz::kSaveBytesPerInput; ++m) {
+        const std::vector<char> x = verve_fuzz::savedBytes(static_cast<const verve_agent*>(a.members[m]), verve_agent_save_memory);
         saveBytes += 4 * x.size();
-        VERVE_FUZZ_CHECK(x == saved(b.members[m]));
+        VERVE_FUZZ_CHECK(x == verve_fuzz::savedBytes(static_cast<const verve_agent*>(b.members[m]), verve_agent_save_memory));
     }
     return 0;
 }
