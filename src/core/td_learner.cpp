@@ -123,14 +123,24 @@ void TdLearner::mark(const std::vector<ActiveFeature>& phi, std::uint32_t action
             n += phi[i].activation >= threshold_;
         }
         reserveLive(std::min<std::size_t>(n, featureCount - liveCount_));  // at most that many become live
+        // Locals, not members: a store to live_ may alias the member count as far as the compiler
+        // knows, which then went through memory on every feature, one serial chain.
+        float* const traces = traces_.data();
+        std::uint32_t* const live = live_.data();
+        const std::size_t stride = stride_;
+        std::uint32_t count = liveCount_;
         for (std::size_t i = 0; i < n; ++i) {
             const ActiveFeature& f = strong[i];
-            float* e = trace(f.index);
-            live_[liveCount_] = f.index;
-            liveCount_ += e[0] == 0.0f;  // newly live (a live value trace is > 0)
-            e[0] = std::max(e[0], f.activation);
-            e[1 + action] = std::max(e[1 + action], f.activation);
+            float* e = traces + f.index * stride;
+            live[count] = f.index;
+            count += e[0] == 0.0f;  // newly live (a live value trace is > 0)
+            // Each max written as the instruction computes it (the larger, else the trace), and both
+            // read before either is written: no branch on the data.
+            const float a = f.activation, v = e[0], p = e[1 + action];
+            e[0] = a > v ? a : v;
+            e[1 + action] = a > p ? a : p;
         }
+        liveCount_ = count;
     }
 }
 
