@@ -120,7 +120,7 @@ void Agent::Impl::recordProbabilities(const std::uint8_t* allowed, bool uniform)
         for (float& p : probabilities) p /= total;
         return;
     }
-    // A hopeless state, or every activation underflowed: the choice was uniform among the allowed.
+    // A hopeless state, or activations that were not finite: the choice was uniform among the allowed.
     float count = 0.0f;
     for (std::size_t a = 0; a < probabilities.size(); ++a) {
         probabilities[a] = allowed == nullptr || allowed[a] != 0 ? 1.0f : 0.0f;

@@ -48,7 +48,7 @@ struct Agent::Impl {
     // An update that needed an RBF the budget did not allow: counted and reported (once).
     void noteBudgetReached();
     // probabilities: chooseAction's activations, divided by their sum (uniform over the allowed
-    // actions if all underflowed, or if `uniform`: the choice ignored them).
+    // actions if the sum is not finite, or if `uniform`: the choice ignored them).
     void recordProbabilities(const std::uint8_t* allowed, bool uniform);
     // A crowd's batch asks for the memory of the agents it updates next (batch.cpp), in stages:
     // stage s + 1 follows only pointers that stage s asked for (this, then the brain and the

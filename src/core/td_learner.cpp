@@ -32,13 +32,23 @@ std::uint32_t TdLearner::chooseAction(const WeightTable& w, const std::vector<Ac
     kernels_->rowSums(w.data().data(), w.stride(), phi.data(), phi.size(), stride_, activations.data(), ahead);
     value = activations[WeightLayout::kValue];
     activations.erase(activations.begin());
-    float total = 0.0f;
+    // The largest preference, not the largest activation: sigmoids that saturate at 1 or
+    // underflow to 0 tie in float where their preferences still differ.
     std::uint32_t best = numActions_;
     for (std::uint32_t a = 0; a < numActions_; ++a) {
+        if ((allowed == nullptr || allowed[a] != 0) && (best == numActions_ || activations[a] > activations[best])) best = a;
+    }
+    const float top = activations[best];
+    // Preferences below about -88 underflow every sigmoid to 0. There y_a = e^(x_a) to float
+    // precision, so the roulette's proportions are e^(x_a - x_max): taken relative to the largest,
+    // the choice still follows the preferences instead of turning uniform where float runs out.
+    const bool underflowed = 1.0f / (1.0f + std::exp(-top)) == 0.0f && std::isfinite(top);
+    float total = 0.0f;
+    for (std::uint32_t a = 0; a < numActions_; ++a) {
         float& y = activations[a];
-        y = allowed == nullptr || allowed[a] != 0 ? 1.0f / (1.0f + std::exp(-y)) : 0.0f;
+        if (allowed != nullptr && allowed[a] == 0) y = 0.0f;
+        else y = underflowed ? std::exp(y - top) : 1.0f / (1.0f + std::exp(-y));
         total += y;
-        if ((allowed == nullptr || allowed[a] != 0) && (best == numActions_ || y > activations[best])) best = a;
     }
     if (greedy) return best;
     if (!(total > 0.0f) || !std::isfinite(total) || value <= uniformAtOrBelow) return uniformAllowed(rng, allowed);

@@ -90,8 +90,9 @@ public:
     // Roulette choice over the sigmoid action activations y_a (left in `activations`); one pass
     // over the features also yields V(s) into `value`. `allowed` (numActions flags, or nullptr for
     // all) zeroes the activation of every action not allowed, so it is never chosen; `greedy` takes
-    // the largest activation (the lowest index on ties) and draws no random number; otherwise a
+    // the largest preference (the lowest index on ties) and draws no random number; otherwise a
     // state whose V(s) is at or below `uniformAtOrBelow` chooses uniformly among the allowed actions.
+    // If every allowed y_a underflows, `activations` holds e^(x_a - max x) instead (their limit).
     std::uint32_t chooseAction(const WeightTable& w, const std::vector<ActiveFeature>& phi, Rng& rng,
                                std::vector<float>& activations, float& value,
                                const std::uint8_t* allowed = nullptr, bool greedy = false,
@@ -126,7 +127,7 @@ public:
                  std::uint32_t featureCount);
 
 private:
-    // Every underflowed activation: a uniform choice among the allowed actions.
+    // A hopeless state, or activations that are not finite: a uniform choice among the allowed.
     std::uint32_t uniformAllowed(Rng& rng, const std::uint8_t* allowed) const;
     void grow(std::uint32_t featureCount);
     void reserveLive(std::size_t more);  // room for `more` live entries beyond liveCount_

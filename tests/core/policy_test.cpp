@@ -2,6 +2,7 @@
 #include <gtest/gtest.h>
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <functional>
 #include <limits>
@@ -100,6 +101,49 @@ TEST(ActionSelection, GreedyPlaysTheMostProbableActionAndDrawsNoRandomNumber) {
     EXPECT_EQ(agent.update(0.0f, discreteObs(1), 0.1f), 0u);
     expectRefused([&] { agent.setActionSelection(static_cast<ActionSelection>(7)); });
     EXPECT_EQ(agent.actionSelection(), ActionSelection::Greedy);
+}
+
+namespace {
+
+// An agent whose state 0 has value 0 and actor preferences `x` (three actions), learning off.
+Agent withPreferences(const float (&x)[3]) {
+    Agent seed(discreteAgent(3));
+    seed.update(0.0f, discreteObs(0), 0.1f);
+    seed.resetShortTermMemory();
+    AgentSnapshot s = seed.snapshot();
+    std::copy(std::begin(x), std::end(x), s.weights.begin() + 1);
+    Agent agent(s);
+    agent.setLearning(false);
+    return agent;
+}
+
+}  // namespace
+
+// Sigmoids tie in float at 1 (above about 17) and at 0 (below about -88) where preferences differ.
+TEST(ActionSelection, GreedyFollowsThePreferenceWhereActivationsSaturate) {
+    for (const auto& x : {std::array<float, 3>{30.0f, 45.0f, 40.0f}, std::array<float, 3>{-120.0f, -95.0f, -100.0f}}) {
+        Agent agent = withPreferences({x[0], x[1], x[2]});
+        agent.setActionSelection(ActionSelection::Greedy);
+        EXPECT_EQ(agent.update(0.0f, discreteObs(0), 0.1f), 1u) << x[1];
+    }
+}
+
+// Preferences all below about -88 underflow every sigmoid to 0; the roulette then keeps their
+// proportions (e^(x_a - max x), the limit of sigmoid ratios) rather than turning uniform.
+TEST(ActionSelection, UnderflowedActivationsStillFollowThePreferences) {
+    Agent agent = withPreferences({-101.0f, -100.0f, -130.0f});
+    const std::vector<int> count = [&] {
+        std::vector<int> c(3, 0);
+        for (int i = 0; i < 2000; ++i) ++c[agent.update(0.0f, discreteObs(0), 0.1f)];
+        return c;
+    }();
+    const std::vector<float>& p = agent.actionProbabilities();
+    const float e = std::exp(-1.0f);
+    EXPECT_NEAR(p[0], e / (1.0f + e), 1e-5f);
+    EXPECT_NEAR(p[1], 1.0f / (1.0f + e), 1e-5f);
+    EXPECT_LT(p[2], 1e-12f);
+    EXPECT_EQ(count[2], 0);
+    EXPECT_NEAR(count[1] / 2000.0, 1.0 / (1.0 + e), 0.04);  // 0.731; sd of the fraction ~0.01
 }
 
 namespace {
