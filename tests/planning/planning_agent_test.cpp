@@ -115,6 +115,36 @@ TEST(PlanningAgent, ContinuousPlansTeachOnlyWhenTheyReachTheEnd) {
     EXPECT_GT(curiousPlanned, 0u);
 }
 
+// Such plans trust only an end the model is sure of (planner.cpp): beside a goal the model's RBFs
+// blur the terminal step into the ordinary ones, its end comes a step early with a reward between
+// the two, and its error estimate there is high. One RBF, a model that predicts the end on every
+// action's first step, certain to 0.95 (uncertainty 0.05) or to 0.7 (0.3: within the plan's
+// threshold of 0.5, beyond the trusted end's 0.2).
+TEST(PlanningAgent, ContinuousPlansTrustOnlyEndsTheModelIsSureOf) {
+    AgentDescriptor d;
+    d.addContinuousSensor();
+    d.numActions = 2;
+    d.planning = true;
+    Observation obs(d);
+    Agent seed(d);
+    seed.update(0.0f, obs, 0.1f);
+    seed.resetShortTermMemory();
+    for (const float certainty : {0.95f, 0.7f}) {
+        AgentSnapshot s = seed.snapshot();
+        ASSERT_EQ(s.featureKeys.size(), 1u);
+        // Each action's model block: [change, reward, terminal, certainty, fast, slow].
+        for (std::uint32_t a = 0; a < d.numActions; ++a) {
+            float* block = s.weights.data() + 1 + d.numActions + a * 6;
+            block[1] = 1.0f;
+            block[2] = 1.0f;
+            block[3] = certainty;
+        }
+        Agent agent(s);
+        agent.update(0.0f, obs, 0.1f);
+        EXPECT_EQ(agent.stats().planningSteps, certainty > 0.8f ? 1u : 0u) << "certainty " << certainty;
+    }
+}
+
 // Such plans look one discount time constant ahead: tau_discount / dt imagined steps, whatever the
 // cap (rollouts that reach the end from further away are the policy's lucky ones; docs/planning.md).
 // A 12-cell corridor learned with plans of up to 50 steps: at tau_discount 0.3 s and dt 0.1 s no plan
