@@ -12,8 +12,8 @@ namespace {
 // is sure of. Where a terminal step sits next to ordinary ones, the model's RBFs blur the two
 // together, and its end lands a step early with a reward between them; the model's error estimate
 // there is high (0.25-0.3 per step beside the corridor's goal, against ~0 along it). Ends that
-// uncertain taught values no policy earns (docs/planning.md, "Trusted ends": 0.1 and 0.2 measured,
-// 0.2 kept; 0.3 acts as none).
+// uncertain taught values no policy earns (docs/planning.md, "Only an end the model is sure of is
+// trusted": 0.02-0.2 measured, 0.2 kept; 0.3 acts as none).
 constexpr float kTrustedEndUncertainty = 0.2f;
 
 bool sameFeatures(const std::vector<ActiveFeature>& a, const std::vector<ActiveFeature>& b) {

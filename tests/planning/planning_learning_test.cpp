@@ -150,7 +150,8 @@ TEST(PlanningLearning, PlanningFindsTheMovedGoalFasterThanRlAlone) {
 // Continuous maze #1 (the experiments table's task, default plans <= 10 steps): seeds 1-10, 20 runs
 // each (the table's 50 cost 2.5x as much under ASan), last 10 trials: planning 55.6 steps against 76.8
 // for RL alone (54.4 before plans trusted only ends the model is sure of, core/planner.cpp; when first
-// measured 53.4 / 80.3), every late trial at the goal (72.7 with 20 runs while imagined steps past the first also taught the actor; core/planner.hpp).
+// measured 53.4 / 80.3), every late trial at the goal (72.7 with 20 runs while imagined steps past
+// the first also taught the actor; core/planner.hpp).
 // Before the model predicted changes (core/predictive_model.hpp) planning took 100.4: plans through
 // blurred positions slipped through walls and taught paths that do not exist.
 TEST(PlanningLearning, ContinuousPlanningNoSlowerThanRlOnMaze1) {
