@@ -7,10 +7,10 @@
 //
 // With continuous sensors and no curiosity, a plan teaches only if it reaches the end of the trial
 // (a dry run first, then the same trajectory learned, so such a plan costs up to twice the
-// queries), and only if the model is sure of that last transition (planner.cpp): imagined steps
-// that merely walk the known region back up the per-step reward drag the overlapping RBFs of the
-// unvisited states next to it down too, and the optimism that drives plain RL toward new states is
-// lost (docs/planning.md). The agent caps such plans at one discount time
+// queries): imagined steps that merely walk the known region back up the per-step reward drag the
+// overlapping RBFs of the unvisited states next to it down too, and the optimism that drives plain
+// RL toward new states is lost (docs/planning.md). The end counts only if the model is sure of
+// that last transition (planner.cpp). The agent caps such plans at one discount time
 // constant (tau_discount / dt steps): far from the end, the rollouts that reach it are the policy's
 // rare lucky ones, and teaching only those made an agent learn values its policy does not earn
 // (docs/planning.md, "Plans look one time constant ahead").

@@ -6,6 +6,11 @@
 #include "core/prefetch.hpp"
 
 namespace verve::core {
+namespace {
+
+float sigmoid(float x) { return 1.0f / (1.0f + std::exp(-x)); }
+
+}  // namespace
 
 TdLearner::TdLearner(std::uint32_t numActions, float traceThreshold)
     : numActions_(numActions), stride_(1 + numActions), threshold_(traceThreshold), kernels_(&kernels()) {
@@ -34,20 +39,21 @@ std::uint32_t TdLearner::chooseAction(const WeightTable& w, const std::vector<Ac
     activations.erase(activations.begin());
     // The largest preference, not the largest activation: sigmoids that saturate at 1 or
     // underflow to 0 tie in float where their preferences still differ.
+    auto isAllowed = [allowed](std::uint32_t a) { return allowed == nullptr || allowed[a] != 0; };
     std::uint32_t best = numActions_;
     for (std::uint32_t a = 0; a < numActions_; ++a) {
-        if ((allowed == nullptr || allowed[a] != 0) && (best == numActions_ || activations[a] > activations[best])) best = a;
+        if (isAllowed(a) && (best == numActions_ || activations[a] > activations[best])) best = a;
     }
     const float top = activations[best];
     // Preferences below about -88 underflow every sigmoid to 0. There y_a = e^(x_a) to float
     // precision, so the roulette's proportions are e^(x_a - x_max): taken relative to the largest,
     // the choice still follows the preferences instead of turning uniform where float runs out.
-    const bool underflowed = 1.0f / (1.0f + std::exp(-top)) == 0.0f && std::isfinite(top);
+    const bool underflowed = sigmoid(top) == 0.0f && std::isfinite(top);
     float total = 0.0f;
     for (std::uint32_t a = 0; a < numActions_; ++a) {
         float& y = activations[a];
-        if (allowed != nullptr && allowed[a] == 0) y = 0.0f;
-        else y = underflowed ? std::exp(y - top) : 1.0f / (1.0f + std::exp(-y));
+        if (!isAllowed(a)) y = 0.0f;
+        else y = underflowed ? std::exp(y - top) : sigmoid(y);
         total += y;
     }
     if (greedy) return best;

@@ -105,57 +105,19 @@ TEST(ActionSelection, GreedyPlaysTheMostProbableActionAndDrawsNoRandomNumber) {
 
 namespace {
 
-// An agent whose state 0 has value 0 and actor preferences `x` (three actions), learning off.
-Agent withPreferences(const float (&x)[3]) {
-    Agent seed(discreteAgent(3));
-    seed.update(0.0f, discreteObs(0), 0.1f);
-    seed.resetShortTermMemory();
-    AgentSnapshot s = seed.snapshot();
-    std::copy(std::begin(x), std::end(x), s.weights.begin() + 1);
-    Agent agent(s);
-    agent.setLearning(false);
-    return agent;
-}
-
-}  // namespace
-
-// Sigmoids tie in float at 1 (above about 17) and at 0 (below about -88) where preferences differ.
-TEST(ActionSelection, GreedyFollowsThePreferenceWhereActivationsSaturate) {
-    for (const auto& x : {std::array<float, 3>{30.0f, 45.0f, 40.0f}, std::array<float, 3>{-120.0f, -95.0f, -100.0f}}) {
-        Agent agent = withPreferences({x[0], x[1], x[2]});
-        agent.setActionSelection(ActionSelection::Greedy);
-        EXPECT_EQ(agent.update(0.0f, discreteObs(0), 0.1f), 1u) << x[1];
-    }
-}
-
-// Preferences all below about -88 underflow every sigmoid to 0; the roulette then keeps their
-// proportions (e^(x_a - max x), the limit of sigmoid ratios) rather than turning uniform.
-TEST(ActionSelection, UnderflowedActivationsStillFollowThePreferences) {
-    Agent agent = withPreferences({-101.0f, -100.0f, -130.0f});
-    const std::vector<int> count = [&] {
-        std::vector<int> c(3, 0);
-        for (int i = 0; i < 2000; ++i) ++c[agent.update(0.0f, discreteObs(0), 0.1f)];
-        return c;
-    }();
-    const std::vector<float>& p = agent.actionProbabilities();
-    const float e = std::exp(-1.0f);
-    EXPECT_NEAR(p[0], e / (1.0f + e), 1e-5f);
-    EXPECT_NEAR(p[1], 1.0f / (1.0f + e), 1e-5f);
-    EXPECT_LT(p[2], 1e-12f);
-    EXPECT_EQ(count[2], 0);
-    EXPECT_NEAR(count[1] / 2000.0, 1.0 / (1.0 + e), 0.04);  // 0.731; sd of the fraction ~0.01
-}
-
-namespace {
-
 // State 0 valued below the floor that -1 per step for ever earns (-1 / (1 - gamma)), state 1 at 0,
 // and both with an actor saturated on action 0 (sigma(30) against sigma(-30)).
-AgentSnapshot saturatedAtTheFloor(float rewardLow) {
+// A three-action agent that has seen states 0 .. states - 1 (one RBF each, all weights 0) and has
+// no short-term memory: a snapshot whose rows a test then sets.
+AgentSnapshot visited(std::int32_t states) {
     Agent seed(discreteAgent(3));
-    seed.update(0.0f, discreteObs(0), 0.1f);
-    seed.update(0.0f, discreteObs(1), 0.1f);
+    for (std::int32_t i = 0; i < states; ++i) seed.update(0.0f, discreteObs(i), 0.1f);
     seed.resetShortTermMemory();
-    AgentSnapshot s = seed.snapshot();
+    return seed.snapshot();
+}
+
+AgentSnapshot saturatedAtTheFloor(float rewardLow) {
+    AgentSnapshot s = visited(2);
     s.rewardLow = rewardLow;
     for (std::size_t f = 0; f < 2; ++f) {
         float* row = s.weights.data() + f * s.stride;
@@ -173,7 +135,39 @@ std::vector<int> choices(Agent& agent, std::int32_t state, float reward, int n, 
     return count;
 }
 
+// An agent whose state 0 has value 0 and actor preferences `x`, learning off.
+Agent withPreferences(std::array<float, 3> x) {
+    AgentSnapshot s = visited(1);
+    std::copy(x.begin(), x.end(), s.weights.begin() + 1);
+    Agent agent(s);
+    agent.setLearning(false);
+    return agent;
+}
+
 }  // namespace
+
+// Sigmoids tie in float at 1 (above about 17) and at 0 (below about -88) where preferences differ.
+TEST(ActionSelection, GreedyFollowsThePreferenceWhereActivationsSaturate) {
+    for (const auto& x : {std::array<float, 3>{30.0f, 45.0f, 40.0f}, std::array<float, 3>{-120.0f, -95.0f, -100.0f}}) {
+        Agent agent = withPreferences(x);
+        agent.setActionSelection(ActionSelection::Greedy);
+        EXPECT_EQ(agent.update(0.0f, discreteObs(0), 0.1f), 1u) << x[1];
+    }
+}
+
+// Preferences all below about -88 underflow every sigmoid to 0; the roulette then keeps their
+// proportions (e^(x_a - max x), the limit of sigmoid ratios) rather than turning uniform.
+TEST(ActionSelection, UnderflowedActivationsStillFollowThePreferences) {
+    Agent agent = withPreferences({-101.0f, -100.0f, -130.0f});
+    const std::vector<int> count = choices(agent, 0, 0.0f, 2000);
+    const std::vector<float>& p = agent.actionProbabilities();
+    const float e = std::exp(-1.0f);
+    EXPECT_NEAR(p[0], e / (1.0f + e), 1e-5f);
+    EXPECT_NEAR(p[1], 1.0f / (1.0f + e), 1e-5f);
+    EXPECT_LT(p[2], 1e-12f);
+    EXPECT_EQ(count[2], 0);
+    EXPECT_NEAR(count[1] / 2000.0, 1.0 / (1.0 + e), 0.04);  // 0.731; sd of the fraction ~0.01
+}
 
 // Every step of a loop valued at the floor has a TD error of 0, so nothing there is learned: a
 // learning agent that samples explores such a state uniformly instead of keeping a saturated habit

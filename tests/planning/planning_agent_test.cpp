@@ -4,6 +4,8 @@
 #include <algorithm>
 #include <cmath>
 
+#include "core/predictive_model.hpp"
+#include "core/weight_table.hpp"
 #include "tasks/corridor.hpp"
 #include "tasks/registry.hpp"
 #include "verve/agent.hpp"
@@ -132,9 +134,10 @@ TEST(PlanningAgent, ContinuousPlansTrustOnlyEndsTheModelIsSureOf) {
     for (const float certainty : {0.95f, 0.7f}) {
         AgentSnapshot s = seed.snapshot();
         ASSERT_EQ(s.featureKeys.size(), 1u);
-        // Each action's model block: [change, reward, terminal, certainty, fast, slow].
+        // Each action's model block, one continuous sensor: [change, reward, terminal, certainty, fast, slow].
+        const std::uint32_t blockSize = static_cast<std::uint32_t>(core::PredictiveModel::outputsPerAction(d));
         for (std::uint32_t a = 0; a < d.numActions; ++a) {
-            float* block = s.weights.data() + 1 + d.numActions + a * 6;
+            float* block = s.weights.data() + core::WeightLayout{d.numActions, 0}.modelOffset() + a * blockSize;
             block[1] = 1.0f;
             block[2] = 1.0f;
             block[3] = certainty;
