@@ -124,6 +124,22 @@ TEST(PlanningLearning, PlanningNoSlowerThanRlLateOnALongCorridor) {
     EXPECT_LE(planned.steps, plain.steps);
 }
 
+// Known gap: the continuous 1-D hot plate, seeds 1-10, 300 runs each, the last 10 of 31 trials:
+// planning 4.633 steps against 4.615 for RL alone (over seeds 1-60 +0.020 +- 0.002, slower on 52).
+// The teaching plans end a cell short of the plate's edge, where the model's RBFs blur the terminal
+// step into its neighbour (terminal output 0.5-0.7 on 92% of them, a reward near 0 where the real
+// one is -1), and the values they teach sit above what the optimal policy earns (the middle cells
+// -5.15 against -5.34). Ends trusted only above 0.85 close it but take maze #2's planning gain
+// (docs/experiments.md, "Plans that end a cell short").
+TEST(KnownGapPlanningLearning, ContinuousPlanningNoSlowerThanRlOnTheOneDimensionalHotPlate) {
+    const std::vector<std::uint64_t> seeds{1, 2, 3, 4, 5, 6, 7, 8, 9, 10};
+    const Late planned = lateTrials("hot-plate-1d-continuous", 300, 31, seeds, 21, 31, planByDefault);
+    const Late plain = lateTrials("hot-plate-1d-continuous", 300, 31, seeds, 21, 31, {});
+    std::printf("continuous 1-D hot plate, last 10 trials over seeds 1-10: planning %.3f, no planning %.3f steps\n",
+                planned.steps, plain.steps);
+    EXPECT_LE(planned.steps, plain.steps);
+}
+
 // The moved goal (maze #1's goal moves at trial 50; the task bounds the actor weights at 3): plans
 // back the old path's new cost up through the known maze, so a planning agent leaves it sooner.
 // Seeds 1-10, 20 runs each: trials 60-69 18.3 steps with planning against 38.0 without; every run
