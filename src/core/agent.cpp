@@ -123,7 +123,7 @@ void Agent::Impl::recordProbabilities(const std::uint8_t* allowed, bool uniform)
     // A hopeless state, or activations that were not finite: the choice was uniform among the allowed.
     float count = 0.0f;
     for (std::size_t a = 0; a < probabilities.size(); ++a) {
-        probabilities[a] = allowed == nullptr || allowed[a] != 0 ? 1.0f : 0.0f;
+        probabilities[a] = core::actionAllowed(allowed, static_cast<std::uint32_t>(a)) ? 1.0f : 0.0f;
         count += probabilities[a];
     }
     for (float& p : probabilities) p /= count;

@@ -39,10 +39,9 @@ std::uint32_t TdLearner::chooseAction(const WeightTable& w, const std::vector<Ac
     activations.erase(activations.begin());
     // The largest preference, not the largest activation: sigmoids that saturate at 1 or
     // underflow to 0 tie in float where their preferences still differ.
-    auto isAllowed = [allowed](std::uint32_t a) { return allowed == nullptr || allowed[a] != 0; };
     std::uint32_t best = numActions_;
     for (std::uint32_t a = 0; a < numActions_; ++a) {
-        if (isAllowed(a) && (best == numActions_ || activations[a] > activations[best])) best = a;
+        if (actionAllowed(allowed, a) && (best == numActions_ || activations[a] > activations[best])) best = a;
     }
     const float top = activations[best];
     // Preferences below about -88 underflow every sigmoid to 0. There y_a = e^(x_a) to float
@@ -52,7 +51,7 @@ std::uint32_t TdLearner::chooseAction(const WeightTable& w, const std::vector<Ac
     float total = 0.0f;
     for (std::uint32_t a = 0; a < numActions_; ++a) {
         float& y = activations[a];
-        if (!isAllowed(a)) y = 0.0f;
+        if (!actionAllowed(allowed, a)) y = 0.0f;
         else y = underflowed ? std::exp(y - top) : sigmoid(y);
         total += y;
     }
@@ -74,10 +73,10 @@ std::uint32_t TdLearner::chooseAction(const WeightTable& w, const std::vector<Ac
 std::uint32_t TdLearner::uniformAllowed(Rng& rng, const std::uint8_t* allowed) const {
     if (allowed == nullptr) return rng.below(numActions_);
     std::uint32_t count = 0;
-    for (std::uint32_t a = 0; a < numActions_; ++a) count += allowed[a] != 0;
+    for (std::uint32_t a = 0; a < numActions_; ++a) count += actionAllowed(allowed, a);
     std::uint32_t pick = rng.below(count);
     for (std::uint32_t a = 0; a < numActions_; ++a) {
-        if (allowed[a] != 0 && pick-- == 0) return a;
+        if (actionAllowed(allowed, a) && pick-- == 0) return a;
     }
     return 0;  // unreachable: callers allow at least one action
 }

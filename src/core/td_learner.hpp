@@ -80,6 +80,9 @@ inline float hopelessValue(ValueBounds b) {
     return b.low < 0.0f ? b.low * (1.0f - 1e-4f) : -std::numeric_limits<float>::infinity();
 }
 
+// An action mask's test: `allowed` holds numActions flags, or is nullptr for every action allowed.
+inline bool actionAllowed(const std::uint8_t* allowed, std::uint32_t a) { return allowed == nullptr || allowed[a] != 0; }
+
 class TdLearner {
 public:
     static constexpr float kStepLimit = 1e12f;  // trainAndDecay's clamp on a weight's step (traces <= 1)

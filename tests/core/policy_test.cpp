@@ -105,8 +105,6 @@ TEST(ActionSelection, GreedyPlaysTheMostProbableActionAndDrawsNoRandomNumber) {
 
 namespace {
 
-// State 0 valued below the floor that -1 per step for ever earns (-1 / (1 - gamma)), state 1 at 0,
-// and both with an actor saturated on action 0 (sigma(30) against sigma(-30)).
 // A three-action agent that has seen states 0 .. states - 1 (one RBF each, all weights 0) and has
 // no short-term memory: a snapshot whose rows a test then sets.
 AgentSnapshot visited(std::int32_t states) {
@@ -116,6 +114,8 @@ AgentSnapshot visited(std::int32_t states) {
     return seed.snapshot();
 }
 
+// State 0 valued below the floor that -1 per step for ever earns (-1 / (1 - gamma)), state 1 at 0,
+// and both with an actor saturated on action 0 (sigma(30) against sigma(-30)).
 AgentSnapshot saturatedAtTheFloor(float rewardLow) {
     AgentSnapshot s = visited(2);
     s.rewardLow = rewardLow;

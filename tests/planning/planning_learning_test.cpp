@@ -39,6 +39,18 @@ Late lateTrials(const char* task, std::uint32_t runs, std::uint32_t trials, cons
 
 void planByDefault(AgentDescriptor& d) { d.planning = true; }
 
+const std::vector<std::uint64_t> kSeeds1To10{1, 2, 3, 4, 5, 6, 7, 8, 9, 10};
+
+// lateTrials of `task` with the default plans and without, over the same runs.
+struct PlannedAndPlain {
+    Late planned, plain;
+};
+PlannedAndPlain withAndWithoutPlans(const char* task, std::uint32_t runs, std::uint32_t trials, std::size_t first,
+                                    std::size_t last) {
+    return {lateTrials(task, runs, trials, kSeeds1To10, first, last, planByDefault),
+            lateTrials(task, runs, trials, kSeeds1To10, first, last, {})};
+}
+
 }  // namespace
 
 TEST(PlanningLearning, PlanningSolvesMaze2FarFasterThanRlAlone) {
@@ -115,9 +127,7 @@ TEST(PlanningLearning, PlanningMatchesRlOnALongCorridor) {
 // of the last cells, and their negative real TD errors lowered the actor's preference for the step to
 // the goal (docs/planning.md). Before the roulette kept underflowed preferences' proportions, 39.833.
 TEST(PlanningLearning, PlanningNoSlowerThanRlLateOnALongCorridor) {
-    const std::vector<std::uint64_t> seeds{1, 2, 3, 4, 5, 6, 7, 8, 9, 10};
-    const Late planned = lateTrials("corridor", 10, 100, seeds, 90, 100, planByDefault);
-    const Late plain = lateTrials("corridor", 10, 100, seeds, 90, 100, {});
+    const auto [planned, plain] = withAndWithoutPlans("corridor", 10, 100, 90, 100);
     std::printf("corridor, trials 91-100 over seeds 1-10: planning %.3f, no planning %.3f steps; worst seed at the goal %.3f\n",
                 planned.steps, plain.steps, planned.worstReached);
     EXPECT_DOUBLE_EQ(planned.worstReached, 1.0);
@@ -132,9 +142,7 @@ TEST(PlanningLearning, PlanningNoSlowerThanRlLateOnALongCorridor) {
 // -5.15 against -5.34). Ends trusted only above 0.85 close it but take maze #2's planning gain
 // (docs/experiments.md, "Plans that end a cell short").
 TEST(KnownGapPlanningLearning, ContinuousPlanningNoSlowerThanRlOnTheOneDimensionalHotPlate) {
-    const std::vector<std::uint64_t> seeds{1, 2, 3, 4, 5, 6, 7, 8, 9, 10};
-    const Late planned = lateTrials("hot-plate-1d-continuous", 300, 31, seeds, 21, 31, planByDefault);
-    const Late plain = lateTrials("hot-plate-1d-continuous", 300, 31, seeds, 21, 31, {});
+    const auto [planned, plain] = withAndWithoutPlans("hot-plate-1d-continuous", 300, 31, 21, 31);
     std::printf("continuous 1-D hot plate, last 10 trials over seeds 1-10: planning %.3f, no planning %.3f steps\n",
                 planned.steps, plain.steps);
     EXPECT_LE(planned.steps, plain.steps);
@@ -171,9 +179,7 @@ TEST(PlanningLearning, PlanningFindsTheMovedGoalFasterThanRlAlone) {
 // Before the model predicted changes (core/predictive_model.hpp) planning took 100.4: plans through
 // blurred positions slipped through walls and taught paths that do not exist.
 TEST(PlanningLearning, ContinuousPlanningNoSlowerThanRlOnMaze1) {
-    const std::vector<std::uint64_t> seeds{1, 2, 3, 4, 5, 6, 7, 8, 9, 10};
-    const Late planned = lateTrials("maze1-continuous", 20, 100, seeds, 90, 100, planByDefault);
-    const Late plain = lateTrials("maze1-continuous", 20, 100, seeds, 90, 100, {});
+    const auto [planned, plain] = withAndWithoutPlans("maze1-continuous", 20, 100, 90, 100);
     std::printf("continuous maze1, last 10 trials over 10 seeds: planning %.1f, no planning %.1f steps\n", planned.steps,
                 plain.steps);
     EXPECT_LE(planned.steps, plain.steps);
