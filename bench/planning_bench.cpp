@@ -1,5 +1,7 @@
 // Update time with planning on: a 10x10 discrete maze #2 agent whose model has learned the maze,
-// plans capped at 10 and 50 imagined steps (the original: 47 us and 147 us; 0.8 us without).
+// plans capped at 10 and 50 imagined steps (the original: 47 us and 147 us; 0.8 us without); and a
+// continuous maze #1 agent, whose plans run only where they reach the goal (a dry run first) and
+// then weigh every action at the real state (core/planner.hpp).
 #include <benchmark/benchmark.h>
 
 #include "tasks/registry.hpp"
@@ -10,8 +12,8 @@ using namespace verve::tasks;
 
 namespace {
 
-void plannedUpdate(benchmark::State& state) {
-    auto env = findTask("maze2-planning")->make(1);
+void plannedUpdate(benchmark::State& state, const char* task) {
+    auto env = findTask(task)->make(1);
     AgentDescriptor d = env->agentDescriptor();
     d.maxPlanningSteps = static_cast<std::uint32_t>(state.range(0));
     d.planning = state.range(0) > 0;
@@ -38,4 +40,5 @@ void plannedUpdate(benchmark::State& state) {
 
 }  // namespace
 
-BENCHMARK(plannedUpdate)->Arg(0)->Arg(10)->Arg(50)->ArgName("max_planning_steps");
+BENCHMARK_CAPTURE(plannedUpdate, maze2, "maze2-planning")->Arg(0)->Arg(10)->Arg(50)->ArgName("max_planning_steps");
+BENCHMARK_CAPTURE(plannedUpdate, maze1_continuous, "maze1-continuous")->Arg(0)->Arg(10)->ArgName("max_planning_steps");

@@ -87,7 +87,7 @@ void Agent::Impl::recordModelError(float error) {
     stats.predictedUncertainty = model.lastUncertainty();
 }
 
-void Agent::Impl::plan(const StepConstants& k) {
+void Agent::Impl::plan(const StepConstants& k, const std::uint8_t* allowed) {
     core::PlanSettings p;
     p.maxSteps = desc.maxPlanningSteps;
     p.uncertaintyThreshold = desc.planningUncertaintyThreshold;
@@ -101,10 +101,12 @@ void Agent::Impl::plan(const StepConstants& k) {
     p.rewards = brain->rewards;
     const bool curious = desc.curiosity != CuriosityMode::None;
     // Overlapping RBFs and no curiosity: plans teach only if they end within the discount horizon,
-    // and the actor only at the real state. Discrete features and no curiosity: a first imagined
+    // and the actor only at the real state, where it then weighs every action. Discrete features and no curiosity: a first imagined
     // step that stays at the real state is not replayed (planner.hpp).
     p.onlyPlansThatEnd = !desc.continuousSensors.empty() && !curious;
     p.actorLearnsAtStartOnly = p.onlyPlansThatEnd;
+    p.weighsEveryAction = p.onlyPlansThatEnd;
+    p.allowed = allowed;
     if (p.onlyPlansThatEnd) p.maxSteps = std::min(p.maxSteps, stepsWithinTimeConstant(lastDt, desc.tauDiscount));
     p.replaysNoStayAtStart = desc.continuousSensors.empty() && !curious;
     p.predictsChange = brain->modelPredictsChange;
@@ -260,7 +262,7 @@ std::uint32_t Agent::update(float reward, ObservationView obs, float dt, ActionM
         }
     }
     // Plan from the state just reached, before acting, so the action already uses what it taught.
-    if (plans) s.plan(k);
+    if (plans) s.plan(k, mask.allowed);
 
     // A learning agent that samples explores a state it values at the floor (core::hopelessValue); a
     // greedy or frozen one plays its policy.

@@ -36,7 +36,7 @@ struct Agent::Impl {
     // real step an imagined trajectory trains the critic and actor.
     void learnModel(float reward, const std::int32_t* discrete, float dt);
     void learnModelTerminal(float reward);
-    void plan(const StepConstants& k);
+    void plan(const StepConstants& k, const std::uint8_t* allowed);  // allowed: the step's action mask
     void recordModelError(float error);
     // Room for everything an update with `features` RBFs, `active` of them in its lookup, may
     // need (scratch, traces, weights). Called before anything changes: an allocation failure

@@ -28,6 +28,8 @@ Planner::Planner(const AgentDescriptor& desc) : td_(desc.numActions, desc.traceT
     prediction_.discrete.resize(desc.discreteSensors.size());
     prediction_.continuous.resize(desc.continuousSensors.size());
     activations_.reserve(std::size_t(desc.numActions) + 1);  // chooseAction's scratch: the trace stride
+    advantages_.assign(desc.numActions, 0.0f);
+    weighed_.assign(desc.numActions, 0);
 }
 
 void Planner::reserve(std::uint32_t features) {
@@ -62,6 +64,40 @@ bool Planner::reachesTheEnd(const PlanSettings& s, const std::vector<ActiveFeatu
         std::swap(phi_, next_);
     }
     return false;
+}
+
+void Planner::weighEveryAction(const PlanSettings& s, const std::vector<ActiveFeature>& start,
+                               const float* startContinuous, WeightTable& w, const StateRepresentation& rep,
+                               const PredictiveModel& model) {
+    const float v = bounded(td_.value(w, start), s.values);
+    // Sure: within a trusted end's limit and the plan's own threshold (long plans on continuous maze
+    // #2, threshold 0.1, were slower than RL alone with 0.2 alone: docs/planning.md).
+    const float sure = std::min(kTrustedEndUncertainty, s.uncertaintyThreshold);
+    const auto actions = static_cast<std::uint32_t>(advantages_.size());
+    for (std::uint32_t a = 0; a < actions; ++a) {  // every judgement first, on the same weights
+        weighed_[a] = 0;
+        if (!actionAllowed(s.allowed, a)) continue;
+        startAt(start, startContinuous);
+        predict(s, w, model, a);
+        if (prediction_.uncertainty > sure) continue;  // unknown: left to exploration
+        float q = std::clamp(prediction_.reward, s.rewards.anyLow(), s.rewards.anyHigh());
+        if (prediction_.terminal <= 0.5f) {
+            rep.find(prediction_.discrete.data(), prediction_.continuous.data(), next_);
+            if (next_.empty()) continue;
+            q += s.gamma * bounded(td_.value(w, next_), s.values);
+        }
+        advantages_[a] = q - v;
+        weighed_[a] = 1;
+    }
+    // Each action as if tried with equal chance: together one real step's worth of actor learning.
+    const TdRates rates{0.0f, s.rates.policy / static_cast<float>(actions), s.rates.policyBound};
+    for (std::uint32_t a = 0; a < actions; ++a) {
+        if (weighed_[a] == 0) continue;
+        td_.clear();
+        td_.mark(start, a, rep.featureCount());
+        td_.trainAndDecay(w, advantages_[a], rates, 0.0f);
+    }
+    td_.clear();
 }
 
 PlanResult Planner::run(const PlanSettings& s, const std::vector<ActiveFeature>& start, const float* startContinuous,
@@ -107,6 +143,7 @@ PlanResult Planner::run(const PlanSettings& s, const std::vector<ActiveFeature>&
         std::swap(phi_, next_);
         if (s.actorLearnsAtStartOnly) rates.policy = 0.0f;
     }
+    if (s.weighsEveryAction && result.steps > 0) weighEveryAction(s, start, startContinuous, w, rep, model);
     return result;
 }
 

@@ -37,6 +37,31 @@ std::uint32_t longestPlan(Agent& agent, Environment& env, std::uint64_t trials, 
     return longest;
 }
 
+// A planning agent of one continuous sensor and `actions` actions after one update at 0: one RBF,
+// nothing learned yet, no previous step. Tests write its model through the snapshot.
+AgentSnapshot oneRbfPlanner(std::uint32_t actions) {
+    AgentDescriptor d;
+    d.addContinuousSensor();
+    d.numActions = actions;
+    d.planning = true;
+    Agent agent(d);
+    agent.update(0.0f, Observation(d), 0.1f);
+    agent.resetShortTermMemory();
+    AgentSnapshot s = agent.snapshot();
+    EXPECT_EQ(s.featureKeys.size(), 1u);
+    return s;
+}
+
+// Makes that one RBF's model predict, for `action`, the end of the trial with `reward`, as sure as
+// `certainty` (the model block of one continuous sensor: change, reward, terminal, certainty, ...).
+void predictEnd(AgentSnapshot& s, std::uint32_t action, float reward, float certainty) {
+    const auto blockSize = static_cast<std::uint32_t>(core::PredictiveModel::outputsPerAction(s.descriptor));
+    float* block = s.weights.data() + core::WeightLayout{s.descriptor.numActions, 0}.modelOffset() + action * blockSize;
+    block[1] = reward;
+    block[2] = 1.0f;
+    block[3] = certainty;
+}
+
 AgentDescriptor mazeAgent(std::uint32_t cap) {
     AgentDescriptor d = findTask("maze2-planning")->make(1)->agentDescriptor();
     d.maxPlanningSteps = cap;
@@ -123,28 +148,44 @@ TEST(PlanningAgent, ContinuousPlansTeachOnlyWhenTheyReachTheEnd) {
 // action's first step, certain to 0.95 (uncertainty 0.05) or to 0.7 (0.3: within the plan's
 // threshold of 0.5, beyond the trusted end's 0.2).
 TEST(PlanningAgent, ContinuousPlansTrustOnlyEndsTheModelIsSureOf) {
-    AgentDescriptor d;
-    d.addContinuousSensor();
-    d.numActions = 2;
-    d.planning = true;
-    Observation obs(d);
-    Agent seed(d);
-    seed.update(0.0f, obs, 0.1f);
-    seed.resetShortTermMemory();
+    const AgentSnapshot seed = oneRbfPlanner(2);
+    const Observation obs(seed.descriptor);
     for (const float certainty : {0.95f, 0.7f}) {
-        AgentSnapshot s = seed.snapshot();
-        ASSERT_EQ(s.featureKeys.size(), 1u);
-        // Each action's model block, one continuous sensor: [change, reward, terminal, certainty, fast, slow].
-        const std::uint32_t blockSize = static_cast<std::uint32_t>(core::PredictiveModel::outputsPerAction(d));
-        for (std::uint32_t a = 0; a < d.numActions; ++a) {
-            float* block = s.weights.data() + core::WeightLayout{d.numActions, 0}.modelOffset() + a * blockSize;
-            block[1] = 1.0f;
-            block[2] = 1.0f;
-            block[3] = certainty;
-        }
+        AgentSnapshot s = seed;
+        for (std::uint32_t a = 0; a < 2; ++a) predictEnd(s, a, 1.0f, certainty);
         Agent agent(s);
         agent.update(0.0f, obs, 0.1f);
         EXPECT_EQ(agent.stats().planningSteps, certainty > 0.8f ? 1u : 0u) << "certainty " << certainty;
+    }
+}
+
+// After such a plan teaches, the actor weighs every action at the real state by the model's
+// one-step prediction of it (core/planner.hpp), not only the action the plan drew. One RBF, three
+// actions whose first step ends the trial: action 0 with +1, action 1 with -1, both certain to 0.95;
+// action 2 with +1 but certain only to 0.7, so it is left to exploration. Actions 1 and 2 start at a
+// preference of -20, so the plan draws action 0: 0's preference rises, 1's falls (only the weighing
+// moves it) and 2's stays; masked in this step, 1's stays too.
+TEST(PlanningAgent, ContinuousPlansWeighEveryActionTheModelIsSureOf) {
+    AgentSnapshot s = oneRbfPlanner(3);
+    const Observation obs(s.descriptor);
+    s.rewardLow = s.finalRewardLow = -1.0f;  // real rewards seen: imagined ones are clamped to them
+    s.rewardHigh = s.finalRewardHigh = 1.0f;
+    predictEnd(s, 0, 1.0f, 0.95f);
+    predictEnd(s, 1, -1.0f, 0.95f);
+    predictEnd(s, 2, 1.0f, 0.7f);
+    float* preference = s.weights.data() + 1;  // the row: critic, then one actor weight per action
+    preference[1] = preference[2] = -20.0f;
+    for (const bool masked : {false, true}) {
+        Agent agent(s);
+        const std::uint8_t allowed[3] = {1, 0, 1};
+        agent.update(0.0f, obs.view(), 0.1f, masked ? ActionMask{allowed, 3} : ActionMask{});
+        ASSERT_EQ(agent.stats().planningSteps, 1u);
+        const AgentSnapshot taught = agent.snapshot();
+        const float* after = taught.weights.data() + 1;
+        EXPECT_GT(after[0], preference[0]) << "masked " << masked;
+        if (masked) EXPECT_EQ(after[1], preference[1]);
+        else EXPECT_LT(after[1], preference[1]);
+        EXPECT_EQ(after[2], preference[2]) << "masked " << masked;
     }
 }
 
