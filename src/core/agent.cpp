@@ -101,8 +101,9 @@ void Agent::Impl::plan(const StepConstants& k, const std::uint8_t* allowed) {
     p.rewards = brain->rewards;
     const bool curious = desc.curiosity != CuriosityMode::None;
     // Overlapping RBFs and no curiosity: plans teach only if they end within the discount horizon,
-    // and the actor only at the real state, where it then weighs every action. Discrete features and no curiosity: a first imagined
-    // step that stays at the real state is not replayed (planner.hpp).
+    // and the actor only at the real state, where it then weighs every action. Discrete features
+    // and no curiosity: a first imagined step that stays at the real state is not replayed
+    // (planner.hpp).
     p.onlyPlansThatEnd = !desc.continuousSensors.empty() && !curious;
     p.actorLearnsAtStartOnly = p.onlyPlansThatEnd;
     p.weighsEveryAction = p.onlyPlansThatEnd;

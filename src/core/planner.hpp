@@ -28,7 +28,7 @@
 // tried with equal chance). The plans that teach beside an end the model blurs leave the critic a
 // little too high there, and an actor that credits only the drawn action took the TD errors that
 // follow as preferences (on the continuous 1-D hot plate, more "stay" 4-7 cells from the edge, and
-// planning 0.4% slower than RL alone; docs/planning.md, "After a plan, the actor weighs every
+// planning was 0.4% slower than RL alone; docs/planning.md, "After a plan, the actor weighs every
 // action the model is sure of"). Actions the model is unsure of are left to exploration.
 //
 // An imagined step from the real state that stays there (a lever of a one-state task, a wall
