@@ -28,8 +28,6 @@ Planner::Planner(const AgentDescriptor& desc) : td_(desc.numActions, desc.traceT
     prediction_.discrete.resize(desc.discreteSensors.size());
     prediction_.continuous.resize(desc.continuousSensors.size());
     activations_.reserve(std::size_t(desc.numActions) + 1);  // chooseAction's scratch: the trace stride
-    advantages_.assign(desc.numActions, 0.0f);
-    weighed_.assign(desc.numActions, 0);
 }
 
 void Planner::reserve(std::uint32_t features) {
@@ -73,9 +71,12 @@ void Planner::weighEveryAction(const PlanSettings& s, const std::vector<ActiveFe
     // Sure: within a trusted end's limit and the plan's own threshold (long plans on continuous maze
     // #2, threshold 0.1, were slower than RL alone with 0.2 alone: docs/planning.md).
     const float sure = std::min(kTrustedEndUncertainty, s.uncertaintyThreshold);
-    const auto actions = static_cast<std::uint32_t>(advantages_.size());
-    for (std::uint32_t a = 0; a < actions; ++a) {  // every judgement first, on the same weights
-        weighed_[a] = 0;
+    // Each action as if tried with equal chance: together one real step's worth of actor learning.
+    // The critic and the model do not learn here, so every action is judged on the same values.
+    const std::uint32_t actions = td_.numActions();
+    const TdRates rates{0.0f, s.rates.policy / static_cast<float>(actions), s.rates.policyBound};
+    td_.clear();  // the plan's traces; each step below decays by 0, which leaves none live
+    for (std::uint32_t a = 0; a < actions; ++a) {
         if (!actionAllowed(s.allowed, a)) continue;
         startAt(start, startContinuous);
         predict(s, w, model, a);
@@ -86,18 +87,9 @@ void Planner::weighEveryAction(const PlanSettings& s, const std::vector<ActiveFe
             if (next_.empty()) continue;
             q += s.gamma * bounded(td_.value(w, next_), s.values);
         }
-        advantages_[a] = q - v;
-        weighed_[a] = 1;
-    }
-    // Each action as if tried with equal chance: together one real step's worth of actor learning.
-    const TdRates rates{0.0f, s.rates.policy / static_cast<float>(actions), s.rates.policyBound};
-    for (std::uint32_t a = 0; a < actions; ++a) {
-        if (weighed_[a] == 0) continue;
-        td_.clear();
         td_.mark(start, a, rep.featureCount());
-        td_.trainAndDecay(w, advantages_[a], rates, 0.0f);
+        td_.trainAndDecay(w, q - v, rates, 0.0f);
     }
-    td_.clear();
 }
 
 PlanResult Planner::run(const PlanSettings& s, const std::vector<ActiveFeature>& start, const float* startContinuous,

@@ -117,8 +117,6 @@ private:
     Prediction prediction_;
     std::vector<ActiveFeature> phi_, next_;  // scratch: the imagined state and its successor
     std::vector<float> activations_;
-    std::vector<float> advantages_;     // weighEveryAction's, one per action
-    std::vector<std::uint8_t> weighed_;  // which of them the model was sure of
 };
 
 }  // namespace verve::core

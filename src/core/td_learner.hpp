@@ -121,6 +121,7 @@ public:
         q.add(traces_.data(), traces_.size() * sizeof(float));
     }
 
+    std::uint32_t numActions() const { return numActions_; }
     std::uint32_t liveCount() const { return liveCount_; }
     std::uint32_t traceStride() const { return stride_; }
     std::vector<std::uint32_t> liveFeatures() const;
