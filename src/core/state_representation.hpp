@@ -35,7 +35,8 @@ public:
     // output vector with foundCapacity(features) room (the scan writes whole lanes, then trims).
     // A lookup visits at most 3^n cells, each once, and never more cells than RBFs.
     void reserve(std::uint32_t features) {
-        if (!exactCellKeys_) reserveRoom(visited_, std::min<std::uint64_t>(features, maxNeighbours_));  // only hashed keys use it
+        if (!exactCellKeys_) reserveRoom(visited_,  // only hashed keys use it; the minimum fits in 32 bits
+                                         static_cast<std::size_t>(std::min<std::uint64_t>(features, maxNeighbours_)));
     }
     static std::size_t foundCapacity(std::uint32_t features) { return std::size_t(features) + kScanLanes; }
     // The same without allocating; returns whether some RBF lies within one width.

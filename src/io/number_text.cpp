@@ -1,5 +1,7 @@
 #include "io/number_text.hpp"
 
+// Floats are in float_text_charconv.cpp or float_text_libc.cpp (src/CMakeLists.txt picks one).
+
 #include <charconv>
 #include <cmath>
 #include <limits>
@@ -30,7 +32,6 @@ bool isSpace(char c) { return c == ' ' || c == '\t' || c == '\n' || c == '\r'; }
 
 }  // namespace
 
-void appendNumber(std::string& out, float value) { appendWithToChars(out, value); }
 void appendNumber(std::string& out, std::uint64_t value) { appendWithToChars(out, value); }
 void appendNumber(std::string& out, std::int64_t value) { appendWithToChars(out, value); }
 
@@ -44,12 +45,6 @@ std::string numberText(std::uint64_t value) {
     std::string s;
     appendNumber(s, value);
     return s;
-}
-
-bool parseNumber(std::string_view text, float& out) {
-    // std::from_chars also reads "inf"/"nan"; they are parsed here and refused by the validator,
-    // which can then say which field holds them.
-    return parseWithFromChars(text, out);
 }
 
 bool parseNumber(std::string_view text, std::uint64_t& out) { return parseWithFromChars(text, out); }
