@@ -1,0 +1,226 @@
+// An agent (or a brain's body): one handle, freed by dispose() or, failing that, when the object
+// is garbage collected. Every method checks its input first; a refused call changes nothing.
+import { invalidArgument, invalidState } from './errors.js';
+import { L, readDescriptor } from './descriptor.js';
+import { checkMask, checkNumber, checkObservation, writeObservation } from './observation.js';
+import { save } from './saves.js';
+
+const SELECTIONS = ['sample', 'greedy'];
+const AXIS_KINDS = ['discrete', 'continuous'];
+/** The most values sampleValues returns (as the Lua binding's limit). */
+export const MAX_SAMPLES = 2 ** 24;
+
+export class Agent {
+  /** @internal Made by Verve.createAgent, Verve.loadAgent and Brain.createBody. */
+  constructor(rt, handle, brain = null) {
+    this.rt = rt;
+    this.handle = handle;
+    this.brain = brain;  // keeps the wrapper alive with its body (the library keeps the brain itself)
+    rt.track(this, '_verve_agent_destroy', handle);
+    const desc = this.descriptor();
+    this.numActions = desc.actions;
+    this.numDiscrete = desc.discrete.length;
+    this.numContinuous = desc.continuous.length;
+  }
+
+  get disposed() { return this.handle === 0; }
+
+  live() {
+    if (this.handle === 0) throw invalidState('the agent is disposed');
+    return this.handle;
+  }
+
+  /** Frees the agent now; later calls throw. Idempotent. */
+  dispose() {
+    if (this.handle === 0) return;
+    this.rt.untrack(this);
+    this.rt.m._verve_agent_destroy(this.handle);
+    this.handle = 0;
+  }
+
+  /** One step: the reward the previous action earned, what the sensors read, the seconds since the previous step. */
+  update(reward, observation, dt, mask) {
+    const h = this.live();
+    checkNumber('reward', reward);
+    const obs = checkObservation('observation', observation);
+    checkNumber('dt', dt);
+    const rt = this.rt;
+    if (mask === undefined) {
+      const [d, c, out] = rt.carve([4 * obs.discrete.length, 4 * obs.continuous.length, 4]);
+      writeObservation(rt.heap, obs, d, c);
+      rt.check(rt.m._verve_agent_update(h, reward, d, obs.discrete.length, c, obs.continuous.length, dt, out));
+      return rt.heap.u32[out >> 2];
+    }
+    checkMask(mask, this.numActions);
+    const [d, c, m, out] = rt.carve([4 * obs.discrete.length, 4 * obs.continuous.length, mask.length, 4]);
+    const heap = rt.heap;
+    writeObservation(heap, obs, d, c);
+    for (let i = 0; i < mask.length; ++i) heap.u8[m + i] = mask[i] ? 1 : 0;
+    rt.check(rt.m._verve_agent_update_masked(h, reward, d, obs.discrete.length, c, obs.continuous.length, dt, m,
+      mask.length, out));
+    return rt.heap.u32[out >> 2];
+  }
+
+  /** The trial really ended (goal, death): a terminal reward. */
+  endEpisode(finalReward) {
+    const h = this.live();
+    this.rt.check(this.rt.m._verve_agent_end_episode(h, checkNumber('finalReward', finalReward)));
+  }
+
+  /** The trial was cut off (a time limit) where the world would have gone on. */
+  truncateEpisode(reward) {
+    const h = this.live();
+    this.rt.check(this.rt.m._verve_agent_truncate_episode(h, checkNumber('reward', reward)));
+  }
+
+  resetShortTermMemory() {
+    this.rt.check(this.rt.m._verve_agent_reset_short_term_memory(this.live()));
+  }
+
+  setLearning(enabled) {
+    const h = this.live();
+    if (typeof enabled !== 'boolean') throw invalidArgument('setLearning takes a boolean');
+    this.rt.check(this.rt.m._verve_agent_set_learning(h, enabled ? 1 : 0));
+  }
+
+  learning() {
+    const h = this.live();
+    const [out] = this.rt.carve([4]);
+    this.rt.check(this.rt.m._verve_agent_get_learning(h, out));
+    return this.rt.heap.i32[out >> 2] !== 0;
+  }
+
+  /** 'sample' (default: explores, learns) or 'greedy' (the most probable action; not saved). */
+  setActionSelection(mode) {
+    const h = this.live();
+    const index = SELECTIONS.indexOf(mode);
+    if (index < 0) throw invalidArgument(`the action selection must be 'sample' or 'greedy' (got ${String(mode)})`);
+    this.rt.check(this.rt.m._verve_agent_set_action_selection(h, index));
+  }
+
+  actionSelection() {
+    const h = this.live();
+    const [out] = this.rt.carve([4]);
+    this.rt.check(this.rt.m._verve_agent_get_action_selection(h, out));
+    return SELECTIONS[this.rt.heap.u32[out >> 2]];
+  }
+
+  /** Each action's probability at the latest update, into `out` when given (no garbage). */
+  actionProbabilities(out) {
+    const h = this.live();
+    const n = this.numActions;
+    if (out !== undefined && (!(out instanceof Float32Array) || out.length < n)) {
+      throw invalidArgument(`actionProbabilities(out) needs a Float32Array of at least ${n} entries`);
+    }
+    const [p] = this.rt.carve([4 * n]);
+    this.rt.check(this.rt.m._verve_agent_get_action_probabilities(h, p, n));
+    const values = this.rt.heap.f32.subarray(p >> 2, (p >> 2) + n);
+    if (out) {
+      out.set(values);
+      return out;
+    }
+    return values.slice();
+  }
+
+  readFloat(fn) {
+    const h = this.live();
+    const [out] = this.rt.carve([4]);
+    this.rt.check(this.rt.m[fn](h, out));
+    return this.rt.heap.f32[out >> 2];
+  }
+
+  /** V(s) of the latest observation. */
+  value() { return this.readFloat('_verve_agent_get_value'); }
+  /** The TD error of the latest real step. */
+  tdError() { return this.readFloat('_verve_agent_get_td_error'); }
+
+  rbfCount() {
+    const h = this.live();
+    const [out] = this.rt.carve([4]);
+    this.rt.check(this.rt.m._verve_agent_get_rbf_count(h, out));
+    return this.rt.heap.u32[out >> 2];
+  }
+
+  stats() {
+    const h = this.live();
+    const rt = this.rt;
+    const [p] = rt.carve([rt.layout[L.statsSize]]);
+    rt.heap.u32[p >> 2] = rt.layout[L.statsSize];
+    rt.check(rt.m._verve_agent_get_stats(h, p));
+    const { u32, f32 } = rt.heap;
+    const at = (field) => (p + rt.layout[L[field]]) >> 2;
+    const u64 = (field) => u32[at(field)] + u32[at(field) + 1] * 2 ** 32;
+    return {
+      steps: u64('statsSteps'),
+      rbfCount: u32[at('statsRbfCount')],
+      liveTraces: u32[at('statsLiveTraces')],
+      value: f32[at('statsValue')],
+      tdError: f32[at('statsTdError')],
+      modelError: f32[at('statsModelError')],
+      predictedUncertainty: f32[at('statsPredictedUncertainty')],
+      planningSteps: u32[at('statsPlanningSteps')],
+      curiosityReward: f32[at('statsCuriosityReward')],
+      rbfBudgetHits: u64('statsRbfBudgetHits'),
+      clampedRewards: u64('statsClampedRewards'),
+    };
+  }
+
+  /** The agent's descriptor (valid input for Verve.createAgent). */
+  descriptor() {
+    const h = this.live();
+    const rt = this.rt;
+    const [p] = rt.carve([rt.layout[L.descSize]]);
+    rt.check(rt.m._verve_agent_desc_init(p, rt.layout[L.descSize]));
+    rt.check(rt.m._verve_agent_get_desc(h, p));
+    return readDescriptor(rt.heap, rt.layout, p);
+  }
+
+  /**
+   * V over 1 or 2 swept sensors, the others held at `base`: axes are {kind: 'discrete' |
+   * 'continuous', index, samples}, `base` an observation (default: every sensor at 0); returns axes[0].samples (* axes[1].samples) values, axis 0 fastest.
+   */
+  sampleValues(axes, base) {
+    const h = this.live();
+    if (!Array.isArray(axes) || axes.length < 1 || axes.length > 2) throw invalidArgument('sampleValues takes 1 or 2 axes');
+    let count = 1;
+    const checked = axes.map((axis, i) => {
+      if (axis === null || typeof axis !== 'object') throw invalidArgument(`axes[${i}] must be an object {kind, index, samples}`);
+      const kind = AXIS_KINDS.indexOf(axis.kind);
+      if (kind < 0) throw invalidArgument(`axes[${i}].kind must be 'discrete' or 'continuous'`);
+      for (const field of ['index', 'samples']) {
+        if (!Number.isInteger(axis[field]) || axis[field] < 0 || axis[field] > MAX_SAMPLES) {
+          throw invalidArgument(`axes[${i}].${field} must be an integer from 0 to ${MAX_SAMPLES}`);
+        }
+      }
+      count *= axis.samples;
+      return [kind, axis.index, axis.samples];
+    });
+    if (count > MAX_SAMPLES) throw invalidArgument(`sampleValues would return ${count} values, at most ${MAX_SAMPLES}`);
+    // No base: every sensor at 0 (the swept ones are overwritten).
+    const obs = base === undefined
+      ? { discrete: new Int32Array(this.numDiscrete), continuous: new Float32Array(this.numContinuous) }
+      : checkObservation('base', base);
+    const rt = this.rt;
+    const axisSize = rt.layout[L.axisSize];
+    const [a, d, c, out] = rt.carve([axisSize * 2, 4 * obs.discrete.length, 4 * obs.continuous.length, 4 * count]);
+    const heap = rt.heap;
+    checked.forEach((axis, i) => heap.u32.set(axis, (a + i * axisSize) >> 2));
+    writeObservation(heap, obs, d, c);
+    rt.check(rt.m._verve_agent_sample_values(h, a, checked.length, d, obs.discrete.length, c, obs.continuous.length, out, count));
+    return rt.heap.f32.slice(out >> 2, (out >> 2) + count);
+  }
+
+  /** An XML save as a string. */
+  saveString() { return new TextDecoder().decode(this.saveBytes()); }
+  /** An XML save as UTF-8 bytes. */
+  saveBytes() { return save(this.rt, '_verve_agent_save_memory', this.live()); }
+  /** A save in the compact binary format (checksummed; faster to save and load). */
+  saveBinaryBytes() { return save(this.rt, '_verve_agent_save_memory_binary', this.live()); }
+
+  toString() {
+    if (this.handle === 0) return 'verve.Agent (disposed)';
+    return `verve.Agent (${this.numDiscrete} discrete, ${this.numContinuous} continuous sensors, ${this.numActions} actions)`;
+  }
+}
+
+if (typeof Symbol.dispose === 'symbol') Agent.prototype[Symbol.dispose] = Agent.prototype.dispose;
