@@ -23,6 +23,7 @@ test_packages=(
   mono-devel                                   # C# binding under Mono 6.8, Unity's runtime: mcs, mono, netstandard facade
   unzip jq                                     # C#: unpacking the NuGet package, checking the Unity package's JSON
   clang-14 libclang-rt-14-dev                  # libFuzzer targets (scripts/fuzz.sh)
+  emscripten nodejs chromium                   # the web build, its Node.js tests and the page in headless Chromium
 )
 
 if [ "${1:-}" = "--test" ]; then packages+=("${test_packages[@]}"); fi
@@ -31,6 +32,8 @@ missing=()
 for p in "${packages[@]}"; do
   dpkg -s "$p" >/dev/null 2>&1 || missing+=("$p")
 done
+# npm is Debian's own package only where Node.js is Debian's (other builds of nodejs carry it).
+if [ "${1:-}" = "--test" ] && ! command -v npm >/dev/null 2>&1; then missing+=(npm); fi
 
 if [ ${#missing[@]} -gt 0 ]; then
   echo "setup: installing ${missing[*]}"
@@ -49,4 +52,8 @@ if [ "${1:-}" = "--test" ]; then
   # The Godot plugin builds against Godot 3.2's GDNative headers, shipped by Debian only as source.
   "$(dirname "$0")/fetch_source.sh" godot3 "$(dirname "$0")/../third_party" \
     modules/gdnative/include modules/gdnative/gdnative_api.json
+  # The web page's test drives Debian's chromium with playwright-core (samples/web/package-lock.json).
+  if [ ! -d "$(dirname "$0")/../samples/web/node_modules/playwright-core" ]; then
+    (cd "$(dirname "$0")/../samples/web" && npm ci --no-audit --no-fund)
+  fi
 fi

@@ -1,7 +1,8 @@
 #!/usr/bin/env bash
 # Sets up, builds and runs every test suite: C++ core, learning, tasks, scenes, C ABI, Lua and the
-# LÖVE game (CTest), the commands the docs give (check_docs.sh), the fuzz targets briefly, the
-# Windows build's C ABI suites under Wine, then the C# binding (dotnet test) against libverve.so.
+# LÖVE game (CTest), the web build (test_web.sh), the commands the docs give (check_docs.sh), the
+# fuzz targets briefly, the Windows build's C ABI suites under Wine, then the C# binding (dotnet
+# test) against libverve.so.
 set -euo pipefail
 cd "$(dirname "$0")/.."
 
@@ -16,6 +17,9 @@ ctest --preset known-gaps -j"$(nproc)" || echo "known gaps: some bars are still 
 # The README's `ctest --preset release`: the release preset's tree is build/, labelled known gaps left out.
 echo "== C++, C ABI, Lua and LÖVE suites (ctest)"
 ctest --preset release -j"$(nproc)"
+
+echo "== the web build: JS API (Node.js) and the cart-pole page (headless Chromium) (scripts/test_web.sh)"
+./scripts/test_web.sh
 
 echo "== the commands README.md and docs/ give (scripts/check_docs.sh, about 1 minute)"
 ./scripts/check_docs.sh
