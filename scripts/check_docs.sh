@@ -103,6 +103,11 @@ in_doc docs/csharp.md 'dotnet pack bindings/csharp/Verve -c Release -p:VerveNati
 doc docs/csharp.md 'bindings/csharp/unity/make_package.sh out/unity build/src/capi'
 doc docs/csharp.md 'dotnet build bindings/csharp/Verve -c Release -p:VerveStaticLink=true -o out/verve-static'
 
+in_doc docs/web.md 'cmake --preset web-release'                  # test_web.sh, just before, ran the build and
+in_doc docs/web.md 'cmake --build --preset web-release -j2'      # the suite (with the native comparisons)
+in_doc docs/web.md 'node samples/web/serve.mjs'
+doc docs/web.md 'node --expose-gc --test bindings/web/test/'
+doc docs/web.md 'cd bindings/web && npm pack' '(cd bindings/web && npm pack --dry-run)'
 in_doc docs/godot.md './scripts/setup.sh --test'
 ctest_doc docs/godot.md "ctest --test-dir build -R '^godot\.'"
 in_doc docs/godot.md 'cp -r build/godot/addons/verve  path/to/your/project/addons/'

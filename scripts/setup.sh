@@ -52,8 +52,10 @@ if [ "${1:-}" = "--test" ]; then
   # The Godot plugin builds against Godot 3.2's GDNative headers, shipped by Debian only as source.
   "$(dirname "$0")/fetch_source.sh" godot3 "$(dirname "$0")/../third_party" \
     modules/gdnative/include modules/gdnative/gdnative_api.json
-  # The web page's test drives Debian's chromium with playwright-core (samples/web/package-lock.json).
-  if [ ! -d "$(dirname "$0")/../samples/web/node_modules/playwright-core" ]; then
-    (cd "$(dirname "$0")/../samples/web" && npm ci --no-audit --no-fund)
+  # The web page's test drives Debian's chromium with playwright-core, and tsc checks index.d.ts
+  # (samples/web/package-lock.json).
+  web="$(dirname "$0")/../samples/web"
+  if [ ! -d "$web/node_modules/playwright-core" ] || [ ! -d "$web/node_modules/typescript" ]; then
+    (cd "$web" && npm ci --no-audit --no-fund)
   fi
 fi

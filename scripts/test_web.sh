@@ -1,10 +1,10 @@
 #!/usr/bin/env bash
 # The web build and its tests (docs/web.md): the web-release preset (Emscripten) into build/web,
-# the JS API's suite (node --test, with the native library's actions for the same seed to compare
-# against), the cart-pole page in headless Chromium (screenshot: build/web/web-cart-pole.png), the
-# bundle's gzipped sizes and one run of the update cost in wasm against native.
+# the JS API's suite (node --test, with a native program to compare actions and saves with), the
+# cart-pole page in headless Chromium (screenshot: build/web/web-cart-pole.png), the bundle's
+# gzipped sizes and one run of the update cost in wasm against native.
 # Installs nothing: ./scripts/setup.sh --test does (emscripten, nodejs, chromium, samples/web's
-# playwright-core); needs the native build (./scripts/build.sh) for the comparisons.
+# playwright-core and typescript); needs the native build (./scripts/build.sh) for the comparisons.
 set -euo pipefail
 cd "$(dirname "$0")/.."
 start=$SECONDS
@@ -13,8 +13,8 @@ if [ ! -e "$native/libverve.so" ]; then
   echo "test_web.sh: no native $native/libverve.so to compare with; run ./scripts/build.sh first" >&2
   exit 1
 fi
-if [ ! -d samples/web/node_modules/playwright-core ]; then
-  echo "test_web.sh: samples/web has no playwright-core; run ./scripts/setup.sh --test first" >&2
+if [ ! -d samples/web/node_modules/playwright-core ] || [ ! -d samples/web/node_modules/typescript ]; then
+  echo "test_web.sh: samples/web lacks playwright-core or typescript; run ./scripts/setup.sh --test first" >&2
   exit 1
 fi
 
@@ -22,13 +22,14 @@ echo "== web: the wasm module (cmake --preset web-release)"
 cmake --preset web-release >/dev/null
 cmake --build --preset web-release -j"$(nproc)"
 
-echo "== web: the native library's actions for the test seeds"
+echo "== web: the JavaScript API (node --test bindings/web/test), against the native library"
+# The native side of test/determinism.test.js: the same seeds' actions, saves both ways.
 cc -O2 -I include bindings/web/test/native/hot_plate_actions.c -L "$native" -lverve -Wl,-rpath,"$PWD/$native" \
   -o build/web/hot_plate_actions
-build/web/hot_plate_actions >build/web/native-actions.txt
+VERVE_NATIVE_PROGRAM="$PWD/build/web/hot_plate_actions" node --expose-gc --test bindings/web/test/
 
-echo "== web: the JavaScript API (node --test bindings/web/test)"
-(cd bindings/web && VERVE_NATIVE_ACTIONS="$PWD/../../build/web/native-actions.txt" node --expose-gc --test test/)
+echo "== web: index.d.ts against a TypeScript program (tsc --noEmit)"
+samples/web/node_modules/.bin/tsc -p bindings/web/test/types
 
 echo "== web: the cart-pole page in headless Chromium"
 (cd samples/web && node test_page.mjs ../../build/web/web-cart-pole.png)

@@ -1,21 +1,32 @@
-// A seed gives the same actions in wasm as in the native library: the fixed-seed runs of
-// test/native/hot_plate_actions.c (hot plate, discrete and continuous; a cart-pole-shaped agent with
-// planning), replayed through the JS API. scripts/test_web.sh builds and runs the native program
-// and points VERVE_NATIVE_ACTIONS at its output; without it this test is skipped.
+// The wasm module against the native library, through test/native/hot_plate_actions.c, which
+// scripts/test_web.sh builds and names in VERVE_NATIVE_PROGRAM (without it these tests are skipped):
+// a seed gives the same actions (the hot plate, discrete and continuous; a cart-pole-shaped agent
+// with planning), and saves move both ways in both formats.
 import { test } from 'node:test';
 import assert from 'node:assert/strict';
-import { readFileSync } from 'node:fs';
+import { execFileSync } from 'node:child_process';
+import { mkdtempSync, readFileSync, rmSync, writeFileSync } from 'node:fs';
+import { tmpdir } from 'node:os';
+import { join } from 'node:path';
 import { verve } from './helpers.js';
 import { HotPlate } from './hot_plate.js';
 
-export function wasmActions() {
+const program = process.env.VERVE_NATIVE_PROGRAM;
+const skip = !program && 'VERVE_NATIVE_PROGRAM is not set (scripts/test_web.sh sets it)';
+const native = (...args) => execFileSync(program, args, { encoding: 'utf8' });
+
+function hotPlateActions(agent, continuous, seed, trials) {
+  const task = new HotPlate({ continuous, seed });
+  const actions = [];
+  for (let t = 0; t < trials; ++t) task.runTrial(agent, 0.1, 1000, actions);
+  return actions.join('');
+}
+
+function wasmActions() {
   const lines = [];
   for (const continuous of [false, true]) {
-    const task = new HotPlate({ continuous, seed: 1 });
-    const agent = verve.createAgent(task.descriptor({ seed: 1 }));
-    const actions = [];
-    for (let t = 0; t < 30; ++t) task.runTrial(agent, 0.1, 1000, actions);
-    lines.push(actions.join(''));
+    const agent = verve.createAgent(new HotPlate({ continuous }).descriptor({ seed: 1 }));
+    lines.push(hotPlateActions(agent, continuous, 1, 30));
     agent.dispose();
   }
   const agent = verve.createAgent({ continuous: [{}, {}, { circular: true }, {}], actions: 3, planning: true, seed: 11 });
@@ -33,14 +44,39 @@ export function wasmActions() {
   return lines;
 }
 
-const nativeFile = process.env.VERVE_NATIVE_ACTIONS;
+/** Greedy actions of 5 trials from start seed 9, as `hot_plate_actions play` runs them. */
+function play(agent) {
+  agent.setActionSelection('greedy');
+  return hotPlateActions(agent, true, 9, 5);
+}
 
-test('the same seed gives the same actions as the native library', { skip: !nativeFile && 'VERVE_NATIVE_ACTIONS is not set (scripts/test_web.sh sets it)' }, () => {
-  const native = readFileSync(nativeFile, 'utf8').trim().split('\n');
+test('the same seed gives the same actions as the native library', { skip }, () => {
+  const expected = native().trim().split('\n');
   const wasm = wasmActions();
-  assert.equal(native.length, 3);
+  assert.equal(expected.length, 3);
   ['hot plate, discrete', 'hot plate, continuous', '4 continuous sensors with planning'].forEach((name, i) => {
-    const at = [...native[i]].findIndex((ch, k) => ch !== wasm[i][k]);
-    assert.equal(wasm[i], native[i], `${name}: ${native[i].length} native actions, first difference at ${at}`);
+    const at = [...expected[i]].findIndex((ch, k) => ch !== wasm[i][k]);
+    assert.equal(wasm[i], expected[i], `${name}: ${expected[i].length} native actions, first difference at ${at}`);
   });
+});
+
+test('saves move between the native library and wasm, XML and binary, both ways', { skip }, () => {
+  const dir = mkdtempSync(join(tmpdir(), 'verve-web-'));
+  try {
+    native('save', dir);
+    for (const name of ['native.xml', 'native.bin']) {
+      const agent = verve.loadAgent(readFileSync(join(dir, name)));
+      assert.equal(play(agent), native('play', join(dir, name)).trim(), name);
+      agent.dispose();
+    }
+    const agent = verve.createAgent(new HotPlate({ continuous: true }).descriptor({ seed: 2 }));
+    hotPlateActions(agent, true, 2, 10);
+    writeFileSync(join(dir, 'wasm.xml'), agent.saveString());
+    writeFileSync(join(dir, 'wasm.bin'), agent.saveBinaryBytes());
+    const greedy = play(agent);
+    for (const name of ['wasm.xml', 'wasm.bin']) assert.equal(native('play', join(dir, name)).trim(), greedy, name);
+    agent.dispose();
+  } finally {
+    rmSync(dir, { recursive: true, force: true });
+  }
 });

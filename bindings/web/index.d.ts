@@ -1,0 +1,178 @@
+// TypeScript declarations of verve-web (src/index.js): the C ABI of Verve in WebAssembly.
+
+/** The C ABI's result names, e.g. 'VERVE_ERROR_INVALID_ARGUMENT'. */
+export type VerveResultName =
+  | 'VERVE_OK'
+  | 'VERVE_ERROR_INVALID_ARGUMENT'
+  | 'VERVE_ERROR_INVALID_STATE'
+  | 'VERVE_ERROR_IO'
+  | 'VERVE_ERROR_FORMAT'
+  | 'VERVE_ERROR_VERSION'
+  | 'VERVE_ERROR_OUT_OF_MEMORY'
+  | 'VERVE_ERROR_BUFFER_TOO_SMALL'
+  | 'VERVE_ERROR_INTERNAL';
+
+export const RESULT_NAMES: readonly VerveResultName[];
+
+/** Every failure: the library's message (or the binding's), its result name and number. A refused call changes nothing. */
+export class VerveError extends Error {
+  readonly name: 'VerveError';
+  readonly code: VerveResultName;
+  readonly result: number;
+}
+
+/** A continuous sensor: values in [-1, 1]; circular ones wrap (angles). */
+export interface ContinuousSensor {
+  circular?: boolean;
+}
+
+/** An agent's settings; every field is optional (Verve.defaults() has them all). Unknown fields are errors. */
+export interface AgentDescriptor {
+  /** Values per discrete sensor, e.g. [10, 10] (at most 16 sensors). */
+  discrete?: number[];
+  /** A count of plain continuous sensors, or one entry per sensor (at most 16). */
+  continuous?: number | ContinuousSensor[];
+  actions?: number;
+  /** RBFs across [-1, 1] per continuous sensor (default 10). */
+  resolution?: number;
+  allocation?: 'dynamic' | 'full';
+  /** Seconds (default 0.1). */
+  tauValue?: number;
+  /** Seconds: the horizon (default 1). */
+  tauDiscount?: number;
+  tauEligibility?: number;
+  policyMultiplier?: number;
+  traceThreshold?: number;
+  seed?: number | bigint;
+  planning?: boolean;
+  tauModel?: number;
+  maxPlanningSteps?: number;
+  planningUncertaintyThreshold?: number;
+  curiosity?: 'none' | 'novelty' | 'progress';
+  curiosityFactor?: number;
+  planningAccumulatesUncertainty?: boolean;
+  learnFromRealSteps?: boolean;
+  discretePrediction?: 'categorical' | 'ordinal';
+  /** RBF budget (default 1000000; 0: unlimited). */
+  maxRbfs?: number | bigint;
+  /** > 0: actor weights stay within ±bound; 0: unbounded (default). */
+  policyWeightBound?: number;
+}
+
+/** A descriptor as read back: every field present, continuous as a list. */
+export type FullDescriptor = Required<Omit<AgentDescriptor, 'continuous'>> & { continuous: ContinuousSensor[] };
+
+export type Numbers = ArrayLike<number>;
+
+/** What the sensors read: discrete values (integers from 0) and continuous ones ([-1, 1]). */
+export interface Observation {
+  discrete?: Numbers;
+  continuous?: Numbers;
+}
+
+export interface AgentStats {
+  steps: number;
+  rbfCount: number;
+  liveTraces: number;
+  value: number;
+  tdError: number;
+  modelError: number;
+  predictedUncertainty: number;
+  planningSteps: number;
+  curiosityReward: number;
+  rbfBudgetHits: number;
+  clampedRewards: number;
+}
+
+export interface ValueAxis {
+  kind: 'discrete' | 'continuous';
+  /** Which sensor of that kind (from 0). */
+  index: number;
+  /** Continuous: points from -1 to 1; discrete: the sensor's value count. */
+  samples: number;
+}
+
+export class Agent {
+  private constructor();
+  readonly numActions: number;
+  readonly numDiscrete: number;
+  readonly numContinuous: number;
+  readonly disposed: boolean;
+  /** One step; returns the action (0 .. actions - 1). mask: one flag per action, at least one true. */
+  update(reward: number, observation: Observation | null | undefined, dt: number, mask?: ArrayLike<boolean | 0 | 1>): number;
+  endEpisode(finalReward: number): void;
+  truncateEpisode(reward: number): void;
+  resetShortTermMemory(): void;
+  setLearning(enabled: boolean): void;
+  learning(): boolean;
+  setActionSelection(mode: 'sample' | 'greedy'): void;
+  actionSelection(): 'sample' | 'greedy';
+  actionProbabilities(out?: Float32Array): Float32Array;
+  value(): number;
+  tdError(): number;
+  rbfCount(): number;
+  stats(): AgentStats;
+  descriptor(): FullDescriptor;
+  /** V over 1 or 2 swept sensors, the others at `base` (default 0): axes[0].samples (× axes[1].samples) values, axis 0 fastest. */
+  sampleValues(axes: [ValueAxis] | [ValueAxis, ValueAxis], base?: Observation): Float32Array;
+  /** XML. */
+  saveString(): string;
+  saveBytes(): Uint8Array;
+  /** The compact binary format. */
+  saveBinaryBytes(): Uint8Array;
+  dispose(): void;
+}
+
+export class Brain {
+  private constructor();
+  readonly disposed: boolean;
+  createBody(): Agent;
+  rbfCount(): number;
+  saveString(): string;
+  saveBytes(): Uint8Array;
+  saveBinaryBytes(): Uint8Array;
+  dispose(): void;
+}
+
+export class Batch {
+  private constructor();
+  readonly disposed: boolean;
+  /** One step of every agent, as the same updates in array order; returns the actions. */
+  update(agents: Agent[], rewards: Numbers, observations: Array<Observation | null | undefined>, dt: number, out?: Uint32Array): Uint32Array;
+  dispose(): void;
+}
+
+export interface Version {
+  major: number;
+  minor: number;
+  patch: number;
+  number: number;
+  text: string;
+}
+
+/** A save: XML as a string or bytes, or the binary format's bytes. */
+export type SaveData = string | Uint8Array | ArrayBuffer | ArrayBufferView;
+
+export class Verve {
+  private constructor();
+  version(): Version;
+  defaults(): FullDescriptor;
+  createAgent(desc?: AgentDescriptor): Agent;
+  loadAgent(data: SaveData): Agent;
+  createBrain(desc?: AgentDescriptor): Brain;
+  loadBrain(data: SaveData): Brain;
+  createBatch(): Batch;
+  /** The Emscripten module underneath, for tools and tests. */
+  readonly module: unknown;
+}
+
+export interface LoadOptions {
+  /** Where the browser fetches verve_wasm.wasm from (default: beside dist/verve_wasm.mjs). */
+  wasmUrl?: string | URL;
+  /** The .wasm's bytes, when the host has them already. */
+  wasmBinary?: ArrayBuffer | Uint8Array;
+}
+
+export function loadVerve(options?: LoadOptions): Promise<Verve>;
+
+export const BINDING_MAJOR_VERSION: number;

@@ -1,0 +1,30 @@
+// Compiled (not run) by scripts/test_web.sh with tsc --noEmit: index.d.ts describes what a game
+// writes, and refuses what the API refuses at the type level.
+import { loadVerve, VerveError, type Agent, type AgentDescriptor } from 'verve-web';
+
+const verve = await loadVerve();
+const desc: AgentDescriptor = { continuous: [{ circular: true }, {}], discrete: [4], actions: 3, seed: 1n };
+const agent: Agent = verve.createAgent(desc);
+const action: number = agent.update(0.5, { continuous: new Float32Array([0.1, -0.2]), discrete: [2] }, 1 / 60);
+agent.update(0, { continuous: [0, 0], discrete: [0] }, 0.1, [true, false, true]);
+const p: Float32Array = agent.actionProbabilities();
+const values: Float32Array = agent.sampleValues([{ kind: 'continuous', index: 0, samples: 32 }]);
+const bytes: Uint8Array = agent.saveBinaryBytes();
+const copy = verve.loadAgent(bytes);
+const brain = verve.createBrain({ continuous: 2, actions: 3 });
+const bodies = [brain.createBody(), brain.createBody()];
+const actions: Uint32Array = verve.createBatch().update(bodies, [0, 0], [{ continuous: [0, 0] }, null], 0.05);
+agent.setActionSelection('greedy');
+try {
+  verve.createAgent({ actions: 0 });
+} catch (e) {
+  if (e instanceof VerveError) console.log(e.code satisfies string, e.message);
+}
+// @ts-expect-error unknown descriptor field
+verve.createAgent({ tauVale: 1 });
+// @ts-expect-error the selection is 'sample' or 'greedy'
+agent.setActionSelection('best');
+// @ts-expect-error a reward is a number
+agent.update('1', null, 0.1);
+console.log(action, p, values, copy.rbfCount(), actions, agent.stats().steps, verve.defaults().tauValue);
+for (const x of [agent, copy, ...bodies, brain]) x.dispose();
