@@ -78,3 +78,26 @@ test('hostile saves: truncated, flipped, random and absurd inputs are refused', 
   assert.deepEqual(agent.saveBinaryBytes(), bin);
   agent.dispose();
 });
+
+test("the C ABI's file saves work on Emscripten's in-memory file system", () => {
+  const { agent } = trainedPlate(false);
+  const m = verve.module;
+  const rt = agent.rt;
+  const path = '/tmp/npc.xml';
+  const saves = [['_verve_agent_save', agent.saveBytes()], ['_verve_agent_save_binary', agent.saveBinaryBytes()]];
+  const p = m._malloc(64);  // not the binding's scratch area, which the next call reuses
+  m.stringToUTF8(path, p, 64);
+  for (const [save, bytes] of saves) {
+    assert.equal(m[save](agent.handle, p), 0, rt.lastError());
+    assert.deepEqual(m.FS.readFile(path), bytes);  // written to a temporary name, then renamed over
+    assert.deepEqual(m.FS.readdir('/tmp').filter((n) => n !== '.' && n !== '..'), ['npc.xml']);
+  }
+  const copy = verve.loadAgent(m.FS.readFile(path));
+  assert.equal(copy.rbfCount(), agent.rbfCount());
+  m.stringToUTF8('/no/such/dir/npc.xml', p, 64);
+  assert.equal(m._verve_agent_save(agent.handle, p), 3);  // VERVE_ERROR_IO
+  assert.match(rt.lastError(), /no\/such\/dir/);
+  m._free(p);
+  copy.dispose();
+  agent.dispose();
+});
