@@ -13,6 +13,10 @@ if [ ! -e "$native/libverve.so" ]; then
   echo "test_web.sh: no native $native/libverve.so to compare with; run ./scripts/build.sh first" >&2
   exit 1
 fi
+if [ "$(node -p 'process.versions.node.split(".")[0]')" -lt 20 ]; then
+  echo "test_web.sh: Node.js $(node --version) is too old for samples/web's playwright-core; 20 or newer is needed" >&2
+  exit 1
+fi
 if [ ! -d samples/web/node_modules/playwright-core ] || [ ! -d samples/web/node_modules/typescript ]; then
   echo "test_web.sh: samples/web lacks playwright-core or typescript; run ./scripts/setup.sh --test first" >&2
   exit 1
