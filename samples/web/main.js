@@ -61,6 +61,9 @@ function drawScene(ctx) {
 }
 
 const N = 48;  // value map samples per axis
+const valueImage = document.createElement('canvas');  // N x N, scaled up onto the visible canvas
+valueImage.width = N;
+valueImage.height = N;
 function drawValues(ctx) {
   const v = agent.sampleValues(
     [{ kind: 'continuous', index: 2, samples: N }, { kind: 'continuous', index: 3, samples: N }],
@@ -83,10 +86,9 @@ function drawValues(ctx) {
       image.data[p + 3] = 255;
     }
   }
-  const off = new OffscreenCanvas(N, N);
-  off.getContext('2d').putImageData(image, 0, 0);
+  valueImage.getContext('2d').putImageData(image, 0, 0);
   ctx.imageSmoothingEnabled = false;
-  ctx.drawImage(off, 0, 0, ctx.canvas.width, ctx.canvas.height);
+  ctx.drawImage(valueImage, 0, 0, ctx.canvas.width, ctx.canvas.height);
   // The pole's current state, as a dot.
   const px = ((cartPole.theta / ((12 * Math.PI) / 180) + 1) / 2) * ctx.canvas.width;
   const py = (1 - (cartPole.omega / ((100 * Math.PI) / 180) + 1) / 2) * ctx.canvas.height;
