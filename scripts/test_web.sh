@@ -36,7 +36,7 @@ echo "== web: index.d.ts against a TypeScript program (tsc --noEmit)"
 samples/web/node_modules/.bin/tsc -p bindings/web/test/types
 
 echo "== web: the cart-pole page in headless Chromium"
-(cd samples/web && node test_page.mjs ../../build/web/web-cart-pole.png)
+(cd samples/web && VERVE_NATIVE_PROGRAM="$PWD/../../build/web/hot_plate_actions" node test_page.mjs ../../build/web/web-cart-pole.png)
 
 echo "== web: bundle sizes (bytes: raw, gzip -9)"
 for f in bindings/web/dist/verve_wasm.wasm bindings/web/dist/verve_wasm.mjs; do

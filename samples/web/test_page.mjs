@@ -2,8 +2,14 @@
 // is downloaded): it loads, its agent learns cart-pole in the page, and a screenshot is taken.
 // `node test_page.mjs [screenshot.png]`; CHROMIUM overrides the browser's path.
 // Learning is measured inside the page: the mean seconds balanced over the last 20 of 500 trials against
-// trials 1-20.
+// trials 1-20. Then the JS API in the page: the fixed-seed runs of bindings/web/test/fixed_runs.js
+// give the same actions in Chromium as in Node.js, and as the native library when
+// VERVE_NATIVE_PROGRAM names bindings/web/test/native/hot_plate_actions (scripts/test_web.sh does);
+// a bad input is a VerveError there too.
+import { execFileSync } from 'node:child_process';
 import { chromium } from 'playwright-core';
+import { loadVerve } from '../../bindings/web/src/index.js';
+import { fixedRuns } from '../../bindings/web/test/fixed_runs.js';
 import { serve } from './serve.mjs';
 
 const screenshot = process.argv[2] ?? 'web-cart-pole.png';
@@ -39,6 +45,37 @@ try {
     `${demo.stepsPerSecond} agent steps/s; seconds balanced: trials 1-20 ${early.toFixed(2)}, ` +
     `${TRIALS - 19}-${TRIALS} ${late.toFixed(2)}; ${demo.rbfs} RBFs`);
   if (!(late > 5 * early)) fail(`no clear learning: ${early.toFixed(2)} s -> ${late.toFixed(2)} s`);
+  // The JS API inside the page, against Node.js and the native library.
+  const browserRuns = await page.evaluate(async () => {
+    const { loadVerve: load } = await import('/bindings/web/src/index.js');
+    const { fixedRuns: runs } = await import('/bindings/web/test/fixed_runs.js');
+    const verve = await load();
+    let refusal = '';
+    try {
+      verve.createAgent({ actions: 2 }).update(NaN, null, 0.1);
+    } catch (e) {
+      refusal = `${e.name} ${e.code}`;
+    }
+    return { lines: runs(verve), refusal };
+  });
+  if (browserRuns.refusal !== 'VerveError VERVE_ERROR_INVALID_ARGUMENT') fail(`a NaN reward in the page gave '${browserRuns.refusal}'`);
+  const references = [['Node.js', fixedRuns(await loadVerve())]];
+  if (process.env.VERVE_NATIVE_PROGRAM) {
+    references.push(['the native library', execFileSync(process.env.VERVE_NATIVE_PROGRAM, { encoding: 'utf8' }).trim().split('\n')]);
+  }
+  let same = true;
+  for (const [name, lines] of references) {
+    lines.forEach((line, i) => {
+      if (browserRuns.lines[i] !== line) {
+        fail(`fixed-seed run ${i + 1}: Chromium's actions differ from ${name}'s`);
+        same = false;
+      }
+    });
+  }
+  if (same) {
+    const count = browserRuns.lines.join('').length;
+    console.log(`page: ${count} fixed-seed actions in Chromium, the same as ${references.map(([name]) => name).join(' and ')}`);
+  }
   // Real time for the picture: the pole as a player sees it.
   await page.click('#realtime');
   await page.waitForTimeout(1500);
