@@ -74,6 +74,11 @@ test('hostile saves: truncated, flipped, random and absurd inputs are refused', 
     assert.throws(() => verve.loadAgent(bad), VerveError);
   }
   assert.throws(() => verve.loadAgent({ length: 2 ** 40 }), /string, Uint8Array or ArrayBuffer/);
+  // Deep nesting, open and closed: a format error, not a stack overflow that would trap the module.
+  for (const depth of [100000, 1000000]) {
+    assert.throws(() => verve.loadAgent('<x>'.repeat(depth)), /not well-formed/);
+    assert.throws(() => verve.loadAgent(`<verve_agent format_version="1">${'<x>'.repeat(depth)}${'</x>'.repeat(depth)}</verve_agent>`), /missing <descriptor>/);
+  }
   // The agent that was saved is untouched by all of it.
   assert.deepEqual(agent.saveBinaryBytes(), bin);
   agent.dispose();
