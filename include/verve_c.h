@@ -131,14 +131,25 @@ typedef struct verve_agent_desc {
                           agent keeps working with the RBFs it has and counts rbf_budget_hits */
     float policy_weight_bound;             /* > 0: actor weights stay within +-bound, so habits can be
                                               unlearned when the world changes; 0: unbounded (default) */
+
+    /* V4. 64 bits wide so that it starts exactly where V3 ended (V3 had 4 bytes of tail padding). */
+    uint64_t adaptation; /* VERVE_ADAPT_* bits: settings the agent sets for itself from what it
+                            experiences (default VERVE_ADAPT_ALL; 0: every setting as given) */
 } verve_agent_desc;
 
+/* verve_agent_desc.adaptation bits (docs/algorithm.md, "Learning at defaults"). */
+#define VERVE_ADAPT_HORIZON 1u      /* the discount horizon follows how long trials last; tau_discount
+                                       is then its shortest */
+#define VERVE_ADAPT_ACTOR_SCALE 2u  /* the actor's steps stay reward-sized when TD errors grow */
+#define VERVE_ADAPT_ALL 3u
+
 /* The sizes of verve_agent_desc a library accepts in struct_size: each release's full struct.
- * V1 ended after `seed` (no planning fields); V2 after discrete_prediction; V3 is the current
- * struct. Fields beyond a smaller struct_size take their defaults. Any other size is refused. */
+ * V1 ended after `seed` (no planning fields); V2 after discrete_prediction; V3 after
+ * policy_weight_bound; V4 is the current struct. Fields beyond a smaller struct_size take their defaults. Any other size is refused. */
 #define VERVE_AGENT_DESC_SIZE_V1 ((uint32_t)offsetof(verve_agent_desc, planning))
 #define VERVE_AGENT_DESC_SIZE_V2 ((uint32_t)offsetof(verve_agent_desc, max_rbfs))
-#define VERVE_AGENT_DESC_SIZE_V3 ((uint32_t)sizeof(verve_agent_desc))
+#define VERVE_AGENT_DESC_SIZE_V3 ((uint32_t)offsetof(verve_agent_desc, adaptation))
+#define VERVE_AGENT_DESC_SIZE_V4 ((uint32_t)sizeof(verve_agent_desc))
 
 typedef struct verve_agent_stats {
     uint32_t struct_size;           /* VERVE_AGENT_STATS_SIZE_V1 or _V2 (sizeof): only that many bytes are written */

@@ -91,6 +91,10 @@ doc docs/experiments.md 'build/samples/tasks/verve-experiments run cue-change --
 doc docs/experiments.md 'build/samples/tasks/verve-experiments run cue-change --policy-weight-bound 0 --tau-value 0.1 --policy-multiplier 5 --csv cue-before.csv' \
   "build/samples/tasks/verve-experiments run cue-change --policy-weight-bound 0 --tau-value 0.1 --policy-multiplier 5 --csv $scratch/cue-before.csv"
 in_doc docs/experiments.md 'gnuplot docs/img/changing-world-cue.gp'   # rewrites the committed PNG: not run
+doc docs/experiments.md 'build/samples/tasks/verve-classic acrobot-v1 --seeds 10'
+doc docs/experiments.md 'build/samples/tasks/verve-classic cart-pole-v1 --seeds 10 --set tau_value=0.01' \
+  'build/samples/tasks/verve-classic cart-pole-v1 --seeds 2 --set tau_value=0.01'
+in_doc docs/experiments.md 'DEFAULTS_ONLY=1 CANDIDATE="key=value"'   # a minute or more: run by hand
 
 # C#: the package commands run (dotnet test and the sample are what test.sh's C# step runs next).
 doc docs/csharp.md 'cmake -S . -B build -DCMAKE_BUILD_TYPE=Release'

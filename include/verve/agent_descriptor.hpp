@@ -23,6 +23,16 @@ enum class DiscretePrediction : std::uint8_t {
     Ordinal = 1,      // the original's single scalar output, rounded to the nearest value
 };
 
+// What an agent may set for itself (AgentDescriptor::adaptation): bits.
+struct Adaptation {
+    // The discount horizon follows how long trials last: tauDiscount is then its shortest
+    // (docs/algorithm.md, "A horizon that follows the trials").
+    static constexpr std::uint32_t Horizon = 1u << 0;
+    // The actor's steps stay reward-sized when TD errors grow with a long horizon.
+    static constexpr std::uint32_t ActorScale = 1u << 1;
+    static constexpr std::uint32_t All = Horizon | ActorScale;
+};
+
 // Bounds on every size an agent derives from its descriptor, so that no descriptor or save can ask
 // for more memory or work per update than these allow (docs/c-api.md "Limits").
 struct DescriptorLimits {
@@ -62,6 +72,9 @@ struct AgentDescriptor {
     // > 0: each actor weight is kept within +-policyWeightBound, so a habit can be unlearned when
     // the world changes (docs/algorithm.md, "A changing world"); 0: unbounded, as in the thesis.
     float policyWeightBound = 0.0f;
+    // Settings the agent sets for itself from what it experiences (Adaptation bits; default all).
+    // 0 keeps every setting as given, as the thesis did: its experiments run so.
+    std::uint32_t adaptation = Adaptation::All;
     std::uint64_t seed = 1;
 
     // Predictive model, planning and curiosity (thesis chapter 2 "Efficient learning", chapter 4).

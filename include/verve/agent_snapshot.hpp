@@ -42,11 +42,20 @@ struct AgentSnapshot {
     // made now) or where it lands (false: saves that predate the field, 0.1.0 among them, which keep
     // working so).
     bool modelPredictsChange = false;
+    // What the adaptations measured (AgentDescriptor::adaptation): the recent mean trial length in
+    // seconds over `horizonTrials` trials (at most core::AdaptiveHorizon::kTrialWindow), and the
+    // running mean squared TD error. Saves that predate them read 0 (and their descriptor's
+    // adaptation reads 0: they keep learning as they did).
+    float horizonTrialSeconds = 0.0f;
+    std::uint32_t horizonTrials = 0;
+    float tdMeanSquare = 0.0f;
 
     // Live eligibility traces: traceFeatures[j] with traceStride floats in traces (value, policy[A]).
     std::uint32_t traceStride = 0;
     std::vector<std::uint32_t> traceFeatures;
     std::vector<float> traces;
+    // Seconds of learning updates since the trial began (the horizon counts it when the trial ends).
+    float trialSeconds = 0.0f;
 
     // Short-term memory: the previous step, for the next TD error.
     bool hasPrevious = false;

@@ -17,6 +17,7 @@ CartPoleScene::~CartPoleScene() = default;
 
 AgentDescriptor CartPoleScene::agentDescriptor() const {
     AgentDescriptor d;
+    d.adaptation = 0;  // the thesis's settings, as its experiment ran
     for (int i = 0; i < 4; ++i) d.addContinuousSensor(false);  // x, x', angle, angle'
     d.numActions = 3;
     d.resolution = 8;  // thesis settings for figure 39

@@ -16,6 +16,7 @@ PendulumScene::~PendulumScene() = default;
 
 AgentDescriptor PendulumScene::agentDescriptor() const {
     AgentDescriptor d;
+    d.adaptation = 0;  // the thesis's settings, as its experiment ran
     d.addContinuousSensor(true);   // angle, circular: -180 and 180 degrees are the same
     d.addContinuousSensor(false);  // angular velocity
     d.numActions = 3;

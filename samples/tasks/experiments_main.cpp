@@ -13,6 +13,7 @@
 #include <string>
 
 #include "tasks/registry.hpp"
+#include "tasks/settings.hpp"
 
 namespace {
 
@@ -87,6 +88,12 @@ int main(int argc, char** argv) {
     run->add_option("--allocation", allocation, "Override RBF allocation: dynamic, full")
         ->transform(CLI::CheckedTransformer(allocations, CLI::ignore_case));
 
+    bool libraryDefaults = false;
+    std::vector<std::string> settings;
+    run->add_flag("--defaults", libraryDefaults,
+                  "Every learning setting at the library's default: only the task's sensors, actions and features");
+    run->add_option("--set", settings, "A setting by its C ABI name, e.g. tau_discount=2 (after --defaults)");
+
     CLI11_PARSE(app, argc, argv);
 
     if (list->parsed()) {
@@ -103,6 +110,8 @@ int main(int argc, char** argv) {
         return 2;
     }
     auto overrides = [&](verve::AgentDescriptor& d) {
+        if (libraryDefaults) d = verve::tasks::atLibraryDefaults(d);
+        for (const auto& s : settings) verve::tasks::applySetting(d, s);
         if (policyMultiplier) d.policyMultiplier = *policyMultiplier;
         if (resolution) d.resolution = *resolution;
         if (planning) d.planning = *planning;

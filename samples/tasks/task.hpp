@@ -37,6 +37,10 @@ public:
     virtual bool truncatesAtCap() const { return true; }
 
 protected:
+    // The thesis's settings, as its experiments ran: nothing adapts (AgentDescriptor::adaptation 0).
+    // The defaults table runs the same tasks with every setting at the library's defaults.
+    Task() { settings_.adaptation = 0; }
+
     AgentDescriptor settings_;
 };
 

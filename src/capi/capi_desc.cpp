@@ -13,8 +13,8 @@ namespace {
 void requireKnownSize(std::uint32_t size) {
     if (!isKnownDescSize(size)) {
         refuse("struct_size " + std::to_string(size) + " is not a verve_agent_desc size this library knows (" +
-               std::to_string(VERVE_AGENT_DESC_SIZE_V1) + ", " + std::to_string(VERVE_AGENT_DESC_SIZE_V2) + " or " +
-               std::to_string(VERVE_AGENT_DESC_SIZE_V3) +
+               std::to_string(VERVE_AGENT_DESC_SIZE_V1) + ", " + std::to_string(VERVE_AGENT_DESC_SIZE_V2) + ", " +
+               std::to_string(VERVE_AGENT_DESC_SIZE_V3) + " or " + std::to_string(VERVE_AGENT_DESC_SIZE_V4) +
                "); fill the struct with verve_agent_desc_init");
     }
 }
@@ -26,7 +26,8 @@ void requireFlag(std::uint32_t value, const std::string& name) {
 }  // namespace
 
 bool isKnownDescSize(std::uint32_t size) noexcept {
-    return size == VERVE_AGENT_DESC_SIZE_V1 || size == VERVE_AGENT_DESC_SIZE_V2 || size == VERVE_AGENT_DESC_SIZE_V3;
+    return size == VERVE_AGENT_DESC_SIZE_V1 || size == VERVE_AGENT_DESC_SIZE_V2 || size == VERVE_AGENT_DESC_SIZE_V3 ||
+           size == VERVE_AGENT_DESC_SIZE_V4;
 }
 
 // The full current struct for a descriptor: the one place the two layouts meet field by field.
@@ -60,6 +61,7 @@ static verve_agent_desc fullDesc(const AgentDescriptor& in) noexcept {
     d.discrete_prediction = static_cast<std::uint32_t>(in.discretePrediction);
     d.max_rbfs = in.maxRbfs;
     d.policy_weight_bound = in.policyWeightBound;
+    d.adaptation = in.adaptation;
     return d;
 }
 
@@ -119,6 +121,11 @@ AgentDescriptor toDescriptor(const verve_agent_desc& in) {
     out.discretePrediction = static_cast<DiscretePrediction>(d.discrete_prediction);
     out.maxRbfs = d.max_rbfs;
     out.policyWeightBound = d.policy_weight_bound;
+    if (d.adaptation > VERVE_ADAPT_ALL) {
+        refuse("adaptation has bits no adaptation uses: " + std::to_string(d.adaptation) + " (VERVE_ADAPT_* bits, at most " +
+               std::to_string(VERVE_ADAPT_ALL) + ")");
+    }
+    out.adaptation = static_cast<std::uint32_t>(d.adaptation);
     out.validate(FieldNaming::CAbi);
     return out;
 }

@@ -57,12 +57,28 @@ Agent::Impl::Impl(std::shared_ptr<BrainState> shared, std::uint64_t seed)
     stats.rbfCount = rep.featureCount();
 }
 
+float Agent::Impl::tauDiscount(float dt) const {
+    if ((desc.adaptation & Adaptation::Horizon) == 0) return desc.tauDiscount;
+    return brain->horizon.tauDiscount(desc.tauDiscount, dt);
+}
+
+void Agent::Impl::endTrial() {
+    if (learning) brain->horizon.seeTrial(trialSeconds);
+}
+
+void Agent::Impl::learnReal(float delta, const StepConstants& k, float decay) {
+    td.trainAndDecay(weights, delta, k.rates, decay, ahead);
+    if (decay > 0.0f) brain->tdScale.see(delta);
+    stats.tdError = delta;
+}
+
 StepConstants Agent::Impl::constantsFor(float dt) const {
     StepConstants k;
-    k.gamma = decayFromTimeConstant(dt, desc.tauDiscount);
+    k.gamma = decayFromTimeConstant(dt, tauDiscount(dt));
     k.traceDecay = k.gamma * decayFromTimeConstant(dt, desc.tauEligibility);
     k.rates.value = rateFromTimeConstant(dt, desc.tauValue) / rep.activationSum();
     k.rates.policy = desc.policyMultiplier * k.rates.value;
+    if ((desc.adaptation & Adaptation::ActorScale) != 0) k.rates.policy *= brain->tdScale.actorFactor();
     k.rates.policyBound = desc.policyWeightBound;
     // Curiosity adds to the rewards of imagined steps: novelty up to its factor, progress (which
     // may be negative) up to its factor in size (core/curiosity.hpp).
@@ -108,7 +124,7 @@ void Agent::Impl::plan(const StepConstants& k, const std::uint8_t* allowed) {
     p.actorLearnsAtStartOnly = p.onlyPlansThatEnd;
     p.weighsEveryAction = p.onlyPlansThatEnd;
     p.allowed = allowed;
-    if (p.onlyPlansThatEnd) p.maxSteps = std::min(p.maxSteps, stepsWithinTimeConstant(lastDt, desc.tauDiscount));
+    if (p.onlyPlansThatEnd) p.maxSteps = std::min(p.maxSteps, stepsWithinTimeConstant(lastDt, tauDiscount(lastDt)));
     p.replaysNoStayAtStart = desc.continuousSensors.empty() && !curious;
     p.predictsChange = brain->modelPredictsChange;
     const core::PlanResult result = planner.run(p, current, normalized.data(), weights, rep, model, rng);
@@ -209,6 +225,7 @@ void Agent::Impl::resetShortTermMemory() {
     td.clear();
     hasPrevious = false;
     previous.clear();
+    trialSeconds = 0.0f;
     stats.liveTraces = 0;
 }
 
@@ -246,6 +263,7 @@ std::uint32_t Agent::update(float reward, ObservationView obs, float dt, ActionM
     if (overBudget) s.noteBudgetReached();
     const float r = s.learnedReward(reward);
     s.lastDt = dt;
+    if (s.learning) s.trialSeconds += dt;
 
     const bool plans = s.learning && s.desc.planning;
     const StepConstants k = s.constantsFor(dt);
@@ -258,8 +276,7 @@ std::uint32_t Agent::update(float reward, ObservationView obs, float dt, ActionM
             const float before = s.sharesBrain ? s.td.value(s.weights, s.previous, s.ahead) : s.latestValue;
             const float next = core::bounded(s.td.value(s.weights, s.current, s.ahead), k.values);
             const float delta = r + k.gamma * next - core::bounded(before, k.values);
-            s.td.trainAndDecay(s.weights, delta, k.rates, k.traceDecay, s.ahead);
-            s.stats.tdError = delta;
+            s.learnReal(delta, k, k.traceDecay);
         }
     }
     // Plan from the state just reached, before acting, so the action already uses what it taught.
@@ -297,9 +314,9 @@ void Agent::endEpisode(float finalReward) {
         // The transition lasted as long as the step that chose its action: the last dt.
         const StepConstants k = s.constantsFor(s.lastDt);
         const float delta = r - core::bounded(s.td.value(s.weights, s.previous), k.values);
-        s.td.trainAndDecay(s.weights, delta, k.rates, 0.0f);
-        s.stats.tdError = delta;
+        s.learnReal(delta, k, 0.0f);
     }
+    s.endTrial();
     s.resetShortTermMemory();
 }
 
@@ -313,9 +330,9 @@ void Agent::truncateEpisode(float reward) {
         const StepConstants k = s.constantsFor(s.lastDt);
         const float v = core::bounded(s.td.value(s.weights, s.previous), k.values);
         const float delta = r + k.gamma * v - v;
-        s.td.trainAndDecay(s.weights, delta, k.rates, 0.0f);
-        s.stats.tdError = delta;
+        s.learnReal(delta, k, 0.0f);
     }
+    s.endTrial();
     s.resetShortTermMemory();
 }
 

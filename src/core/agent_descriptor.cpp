@@ -33,6 +33,7 @@ constexpr Field kCuriosityFactor{"curiosityFactor", "curiosity_factor"};
 constexpr Field kDiscretePrediction{"discretePrediction", "discrete_prediction"};
 constexpr Field kMaxRbfs{"maxRbfs", "max_rbfs"};
 constexpr Field kPolicyWeightBound{"policyWeightBound", "policy_weight_bound"};
+constexpr Field kAdaptation{"adaptation", "adaptation"};
 
 class Validator {
 public:
@@ -119,6 +120,8 @@ void AgentDescriptor::validate(FieldNaming naming) const {
     v.requireTimeConstant(tauDiscount, kTauDiscount);
     v.requireTimeConstant(tauEligibility, kTauEligibility);
     v.requireTimeConstant(tauModel, kTauModel);
+    v.require((adaptation & ~Adaptation::All) == 0,
+              v.name(kAdaptation) + " has bits no adaptation uses (known: " + std::to_string(Adaptation::All) + ")");
     v.require(std::isfinite(policyMultiplier) && policyMultiplier >= 0.0f,
               v.name(kPolicyMultiplier) + " must be a finite number >= 0");
     v.require(std::isfinite(traceThreshold) && traceThreshold > 0.0f && traceThreshold < 1.0f,

@@ -31,6 +31,13 @@ struct Agent::Impl {
     Impl(std::shared_ptr<BrainState> shared, std::uint64_t seed);
 
     StepConstants constantsFor(float dt) const;
+    // tau_discount, or the horizon the trials set with Adaptation::Horizon (core/horizon.hpp).
+    float tauDiscount(float dt) const;
+    // A real step's TD error trains the critic and actor (traces then decay by `decay`); the
+    // error's size informs Adaptation::ActorScale (core/td_scale.hpp).
+    void learnReal(float delta, const StepConstants& k, float decay);
+    // A trial ends (endEpisode, truncateEpisode): its length informs the horizon.
+    void endTrial();
     void resetShortTermMemory();
     // Planning mode (desc.planning): the model learns the previous real transition, and after a
     // real step an imagined trajectory trains the critic and actor.
@@ -88,6 +95,7 @@ struct Agent::Impl {
     std::vector<std::int32_t> previousDiscrete;
     std::vector<float> previousContinuous;
     float lastDt = 0.1f;  // dt of the latest update: the duration of a terminal transition
+    float trialSeconds = 0.0f;  // learning updates' dt since the trial began
 
     // V(s) of the latest state as the weights give it; stats.value reports it within the value
     // bounds, as every TD error uses it.

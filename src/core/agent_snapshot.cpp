@@ -74,6 +74,15 @@ std::unique_ptr<Agent::Impl> restoreAgent(const AgentSnapshot& snap) {
     requireRewardRange(snap.finalRewardLow, snap.finalRewardHigh, "final reward range");
     s.brain->rewards = core::RewardRange{snap.rewardLow, snap.rewardHigh, snap.finalRewardLow, snap.finalRewardHigh};
     s.brain->modelPredictsChange = snap.modelPredictsChange;
+    if (!(std::isfinite(snap.horizonTrialSeconds) && snap.horizonTrialSeconds >= 0.0f) ||
+        snap.horizonTrials > core::AdaptiveHorizon::kTrialWindow) {
+        corrupt("the horizon's trial statistics must be a finite length >= 0 over at most " +
+                std::to_string(core::AdaptiveHorizon::kTrialWindow) + " trials");
+    }
+    if (!(std::isfinite(snap.tdMeanSquare) && snap.tdMeanSquare >= 0.0f)) corrupt("the mean squared TD error must be finite and >= 0");
+    s.brain->horizon.meanTrialSeconds = snap.horizonTrialSeconds;
+    s.brain->horizon.trials = snap.horizonTrials;
+    s.brain->tdScale.meanSquare = snap.tdMeanSquare;
 
     // Traces: optional (an empty list restores none).
     if (!snap.traceFeatures.empty() || !snap.traces.empty()) {
@@ -96,6 +105,8 @@ std::unique_ptr<Agent::Impl> restoreAgent(const AgentSnapshot& snap) {
         s.td.restore(snap.traceFeatures, snap.traces, static_cast<std::uint32_t>(count));
     }
 
+    if (!(std::isfinite(snap.trialSeconds) && snap.trialSeconds >= 0.0f)) corrupt("the trial's seconds must be finite and >= 0");
+    s.trialSeconds = snap.trialSeconds;
     s.hasPrevious = snap.hasPrevious;
     if (snap.hasPrevious) {
         requireSize(snap.previousActivations.size(), snap.previousFeatures.size(), "previous activations");
@@ -146,6 +157,9 @@ void snapshotBrain(const BrainState& brain, AgentSnapshot& snap) {
     snap.finalRewardLow = brain.rewards.finalLow;
     snap.finalRewardHigh = brain.rewards.finalHigh;
     snap.modelPredictsChange = brain.modelPredictsChange;
+    snap.horizonTrialSeconds = brain.horizon.meanTrialSeconds;
+    snap.horizonTrials = brain.horizon.trials;
+    snap.tdMeanSquare = brain.tdScale.meanSquare;
     snap.traceStride = 1 + brain.desc.numActions;
 }
 
@@ -159,6 +173,7 @@ AgentSnapshot Agent::snapshot() const {
     snap.traceStride = s.td.traceStride();
     snap.traceFeatures = s.td.liveFeatures();
     snap.traces = s.td.liveTraces();
+    snap.trialSeconds = s.trialSeconds;
     snap.hasPrevious = s.hasPrevious;
     for (const auto& f : s.previous) {
         snap.previousFeatures.push_back(f.index);

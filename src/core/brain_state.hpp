@@ -3,7 +3,9 @@
 #pragma once
 #include <cstdint>
 
+#include "core/horizon.hpp"
 #include "core/state_representation.hpp"
+#include "core/td_scale.hpp"
 #include "core/td_learner.hpp"
 #include "core/weight_table.hpp"
 #include "verve/agent_descriptor.hpp"
@@ -27,6 +29,10 @@ struct BrainState {
     // Whether the model's continuous outputs are changes (core/predictive_model.hpp): true for every
     // brain made now, false for one loaded from a save that predates them, which keeps its meaning.
     bool modelPredictsChange = true;
+    // What the adaptations measure over every body's experience (AgentDescriptor::adaptation):
+    // how long trials last (core/horizon.hpp) and how large TD errors are (core/td_scale.hpp).
+    core::AdaptiveHorizon horizon;
+    core::TdScale tdScale;
     std::uint64_t bodiesMade = 0;  // numbers each new body's random stream
     core::StateRepresentation rep;
 };

@@ -8,6 +8,7 @@
 //   items(name, vector<T>&, itemBytes, f)  u64 count, then f(io, item) for each item
 #pragma once
 #include <cstdint>
+#include <type_traits>
 
 #include "verve/agent_snapshot.hpp"
 
@@ -62,8 +63,17 @@ void transferPayload(Io& io, Snapshot& s, Flag& shortTerm, std::uint32_t version
         io.value("final_reward_low", s.finalRewardLow);
         io.value("final_reward_high", s.finalRewardHigh);
     }
+    if (version >= 5) {
+        io.value("adaptation", s.descriptor.adaptation);
+        io.value("horizon_trial_seconds", s.horizonTrialSeconds);
+        io.value("horizon_trials", s.horizonTrials);
+        io.value("td_mean_square", s.tdMeanSquare);
+    } else if constexpr (!std::is_const_v<Snapshot>) {
+        s.descriptor.adaptation = 0;  // an older save keeps every setting as given
+    }
     io.flag("short_term_memory", shortTerm);
     if (!shortTerm) return;
+    if (version >= 5) io.value("trial_seconds", s.trialSeconds);
     io.value("trace_stride", s.traceStride);
     io.list("trace_features", s.traceFeatures);
     io.list("traces", s.traces);

@@ -4,6 +4,7 @@
 #include <cmath>
 #include <string>
 
+#include "core/horizon.hpp"
 #include "verve/error.hpp"
 
 namespace verve::io {
@@ -142,6 +143,12 @@ void checkSnapshot(const AgentSnapshot& s) {
     if (!(std::isfinite(s.modelError) && s.modelError >= 0.0f)) fail("modelError is not a finite number >= 0");
     checkRewardRange(s.rewardLow, s.rewardHigh, "reward range");
     checkRewardRange(s.finalRewardLow, s.finalRewardHigh, "final reward range");
+    if (!(std::isfinite(s.horizonTrialSeconds) && s.horizonTrialSeconds >= 0.0f)) {
+        fail("horizonTrialSeconds is not a finite number >= 0");
+    }
+    if (s.horizonTrials > core::AdaptiveHorizon::kTrialWindow) fail("horizonTrials is above " + std::to_string(core::AdaptiveHorizon::kTrialWindow));
+    if (!(std::isfinite(s.trialSeconds) && s.trialSeconds >= 0.0f)) fail("trialSeconds is not a finite number >= 0");
+    if (!(std::isfinite(s.tdMeanSquare) && s.tdMeanSquare >= 0.0f)) fail("tdMeanSquare is not a finite number >= 0");
 }
 
 }  // namespace verve::io

@@ -96,6 +96,8 @@ AgentDescriptor readDescriptor(pugi::xml_node root) {
     d.policyMultiplier = readFloat(n, "policy_multiplier");
     d.traceThreshold = readFloat(n, "trace_threshold");
     if (n.attribute("policy_weight_bound")) d.policyWeightBound = readFloat(n, "policy_weight_bound");  // absent: 0
+    // Absent from saves made before adaptation: they keep every setting as given.
+    d.adaptation = n.attribute("adaptation") ? readUint32(n, "adaptation") : 0u;
     d.seed = readUint64(n, "seed");
     d.planning = readBool(n, "planning");
     d.tauModel = readFloat(n, "tau_model");
@@ -136,6 +138,10 @@ void readState(pugi::xml_node root, AgentSnapshot& s) {
         if (model == "change") s.modelPredictsChange = true;
         else if (model != "position") failAttribute(n, "continuous_model", model, "change or position");
     }
+    // Absent from saves made before adaptation: nothing measured yet.
+    if (n.attribute("horizon_trial_seconds")) s.horizonTrialSeconds = readFloat(n, "horizon_trial_seconds");
+    if (n.attribute("horizon_trials")) s.horizonTrials = readUint32(n, "horizon_trials");
+    if (n.attribute("td_mean_square")) s.tdMeanSquare = readFloat(n, "td_mean_square");
     std::vector<std::uint64_t> rng;
     std::string bad;
     if (!parseList(attributeText(n, "rng"), rng, bad) || rng.size() != s.rng.size()) {
@@ -160,6 +166,7 @@ void readShortTermMemory(pugi::xml_node root, AgentSnapshot& s) {
         s.traceFeatures = readChildList<std::uint32_t>(t, "features");
         readCount(t, s.traceFeatures.size(), "features");
         s.traces = readChildList<float>(t, "values");
+        if (t.attribute("trial_seconds")) s.trialSeconds = readFloat(t, "trial_seconds");  // absent before 0.3
     }
     pugi::xml_node p = root.child("previous");
     s.hasPrevious = static_cast<bool>(p);

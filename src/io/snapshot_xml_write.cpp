@@ -73,6 +73,7 @@ void writeDescriptor(pugi::xml_node root, const AgentDescriptor& d) {
     setNumber(n, "trace_threshold", d.traceThreshold);
     // Written only when set, so saves of agents without it stay readable by older libraries.
     if (d.policyWeightBound > 0.0f) setNumber(n, "policy_weight_bound", d.policyWeightBound);
+    setNumber(n, "adaptation", std::uint64_t{d.adaptation});
     setNumber(n, "seed", d.seed);
     n.append_attribute("planning").set_value(d.planning);
     setNumber(n, "tau_model", d.tauModel);
@@ -100,6 +101,9 @@ void writeState(pugi::xml_node root, const AgentSnapshot& s) {
     setNumber(n, "final_reward_low", s.finalRewardLow);
     setNumber(n, "final_reward_high", s.finalRewardHigh);
     n.append_attribute("continuous_model").set_value(s.modelPredictsChange ? "change" : "position");
+    setNumber(n, "horizon_trial_seconds", s.horizonTrialSeconds);
+    setNumber(n, "horizon_trials", std::uint64_t{s.horizonTrials});
+    setNumber(n, "td_mean_square", s.tdMeanSquare);
     std::string rng;
     for (std::uint64_t word : s.rng) {
         if (!rng.empty()) rng += ' ';
@@ -124,6 +128,7 @@ void writeShortTermMemory(pugi::xml_node root, const AgentSnapshot& s) {
     setNumber(t, "count", std::uint64_t{s.traceFeatures.size()});
     appendList(t, "features", s.traceFeatures, 16);
     appendList(t, "values", s.traces, s.traceStride);
+    setNumber(t, "trial_seconds", s.trialSeconds);
     if (!s.hasPrevious) return;
     pugi::xml_node p = root.append_child("previous");
     setNumber(p, "action", std::uint64_t{s.previousAction});

@@ -232,6 +232,36 @@ TEST(CApiDesc, PolicyWeightBoundReachesTheAgentAndIsValidated) {
     verve_agent_destroy(agent);
 }
 
+TEST(CApiDesc, AdaptationReachesTheAgentAndUnknownBitsAreRefused) {
+    verve_agent_desc d = smallDesc();
+    EXPECT_EQ(d.adaptation, uint64_t{VERVE_ADAPT_ALL});  // the library's default
+    d.adaptation = VERVE_ADAPT_HORIZON;
+    verve_agent* agent = nullptr;
+    ASSERT_EQ(verve_agent_create(&d, &agent), VERVE_OK) << verve_last_error();
+    verve_agent_desc back;
+    verve_agent_desc_default(&back);
+    ASSERT_EQ(verve_agent_get_desc(agent, &back), VERVE_OK);
+    EXPECT_EQ(back.adaptation, uint64_t{VERVE_ADAPT_HORIZON});
+    verve_agent_destroy(agent);
+    for (uint64_t bad : {uint64_t{4}, uint64_t{VERVE_ADAPT_ALL} | (uint64_t{1} << 40)}) {
+        d.adaptation = bad;
+        agent = nullptr;
+        EXPECT_EQ(verve_agent_create(&d, &agent), VERVE_ERROR_INVALID_ARGUMENT) << bad;
+        EXPECT_EQ(agent, nullptr);
+        EXPECT_NE(lastError().find("adaptation"), std::string::npos) << lastError();
+    }
+    // A V3 host's struct ends before the field, whatever lies beyond it: the default applies.
+    unsigned char memory[sizeof(verve_agent_desc)];
+    std::memset(memory, 0xAB, sizeof memory);
+    verve_agent_desc* v3 = reinterpret_cast<verve_agent_desc*>(memory);
+    ASSERT_EQ(verve_agent_desc_init(v3, VERVE_AGENT_DESC_SIZE_V3), VERVE_OK);
+    v3->num_actions = 2;
+    ASSERT_EQ(verve_agent_create(v3, &agent), VERVE_OK) << verve_last_error();
+    ASSERT_EQ(verve_agent_get_desc(agent, &back), VERVE_OK);
+    EXPECT_EQ(back.adaptation, uint64_t{VERVE_ADAPT_ALL});
+    verve_agent_destroy(agent);
+}
+
 TEST_F(CApi, BadObservationsChangeNothing) {
     const std::string before = saved();
     int32_t disc = 2;
@@ -369,7 +399,8 @@ TEST(CApiDesc, AnOldSmallerStructIsAcceptedAndTheRestDefaulted) {
 
 TEST(CApiDesc, GarbageStructSizesAreRefused) {
     for (uint32_t size : {0u, 4u, VERVE_AGENT_DESC_SIZE_V1 - 8, VERVE_AGENT_DESC_SIZE_V1 + 4,
-                          VERVE_AGENT_DESC_SIZE_V2 + 4, VERVE_AGENT_DESC_SIZE_V3 + 8, 0xFFFFFFFFu}) {
+                          VERVE_AGENT_DESC_SIZE_V2 + 4, VERVE_AGENT_DESC_SIZE_V3 + 4,
+                          VERVE_AGENT_DESC_SIZE_V4 + 8, 0xFFFFFFFFu}) {
         verve_agent_desc d = smallDesc();
         d.struct_size = size;
         verve_agent* out = nullptr;

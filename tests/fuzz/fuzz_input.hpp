@@ -83,6 +83,9 @@ inline verve_agent_desc anyDescriptor(FuzzedDataProvider& in) {
     // default budget of a million RBFs, and a full lattice that large takes seconds to build under
     // ASan (fuzz_crowd: 14 s): such descriptors grow their RBFs where observations land instead.
     if (d.struct_size < offsetof(verve_agent_desc, max_rbfs) + sizeof d.max_rbfs) d.rbf_allocation = VERVE_RBF_DYNAMIC;
+    // Any adaptation bits, now and then unknown ones (which must be refused).
+    d.adaptation = in.ConsumeIntegralInRange<int>(0, 31) == 0 ? in.ConsumeIntegral<uint64_t>()
+                                                              : in.ConsumeIntegralInRange<uint64_t>(0, VERVE_ADAPT_ALL);
     return d;
 }
 

@@ -116,6 +116,7 @@ inline void expectSameDescriptor(const AgentDescriptor& a, const AgentDescriptor
     EXPECT_EQ(a.learnFromRealSteps, b.learnFromRealSteps);
     EXPECT_EQ(a.discretePrediction, b.discretePrediction);
     EXPECT_EQ(a.maxRbfs, b.maxRbfs);
+    EXPECT_EQ(a.adaptation, b.adaptation);
 }
 
 // Every field, floats compared bit for bit.
@@ -131,6 +132,9 @@ inline void expectSameSnapshot(const AgentSnapshot& a, const AgentSnapshot& b, b
     EXPECT_EQ(a.finalRewardLow, b.finalRewardLow);
     EXPECT_EQ(a.finalRewardHigh, b.finalRewardHigh);
     EXPECT_EQ(a.modelPredictsChange, b.modelPredictsChange);
+    EXPECT_EQ(std::memcmp(&a.horizonTrialSeconds, &b.horizonTrialSeconds, sizeof(float)), 0);
+    EXPECT_EQ(a.horizonTrials, b.horizonTrials);
+    EXPECT_EQ(std::memcmp(&a.tdMeanSquare, &b.tdMeanSquare, sizeof(float)), 0);
     EXPECT_EQ(a.rng, b.rng);
     EXPECT_EQ(a.steps, b.steps);
     EXPECT_EQ(std::memcmp(&a.modelError, &b.modelError, sizeof(float)), 0);
@@ -139,6 +143,7 @@ inline void expectSameSnapshot(const AgentSnapshot& a, const AgentSnapshot& b, b
     EXPECT_EQ(a.traceStride, b.traceStride);
     EXPECT_EQ(a.traceFeatures, b.traceFeatures);
     EXPECT_TRUE(sameBits(a.traces, b.traces));
+    EXPECT_EQ(std::memcmp(&a.trialSeconds, &b.trialSeconds, sizeof(float)), 0);
     EXPECT_EQ(a.hasPrevious, b.hasPrevious);
     if (a.hasPrevious && b.hasPrevious) {
         EXPECT_EQ(a.previousFeatures, b.previousFeatures);

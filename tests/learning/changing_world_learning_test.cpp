@@ -6,6 +6,7 @@
 
 #include "learning_window.hpp"
 #include "tasks/cue_change.hpp"
+#include "tasks/settings.hpp"
 
 using namespace verve::tasks;
 using namespace verve::tasks::testing;
@@ -107,4 +108,18 @@ TEST(ChangingWorldLearning, NoRunStaysStuckOnALongCorridor) {
     std::printf("corridor, trials 91-100 over seeds 1-10: %.2f steps, worst seed at the goal %.3f\n", steps, worst);
     EXPECT_DOUBLE_EQ(worst, 1.0);
     EXPECT_LE(steps, 39.5);
+}
+
+// Known gap (not gating): at the library's defaults the agent does not relearn the changed cues
+// (0.684 correct on trials 150-249 after the change, 12 seeds). The task's bound
+// (policy_weight_bound 10) as a default fixes it but costs the bandit (1.475 -> 1.399).
+TEST(KnownGapChangingWorldLearning, CueToActionIsRelearnedAtDefaults) {
+    const std::vector<LearningCurve> runs = cueRuns([](verve::AgentDescriptor& d) { d = atLibraryDefaults(d); });
+    double within250 = 0.0;
+    for (const LearningCurve& c : runs) {
+        within250 += windowOf(c, kChange + 150, kChange + 250).success / static_cast<double>(runs.size());
+    }
+    std::printf("[ measured ] cue-change at defaults, 12 seeds: correct on trials 150-249 after the change %.3f\n",
+                within250);
+    EXPECT_GE(within250, 0.90);
 }

@@ -72,12 +72,13 @@ namespace Verve.Tests
             Assert.Equal((long)SensorKind.Continuous, c["const VERVE_SENSOR_CONTINUOUS"]);
             Assert.Equal((long)ResultCode.Internal, c["const VERVE_ERROR_INTERNAL"]);
             Assert.Equal((long)ActionSelection.Greedy, c["const VERVE_GREEDY"]);
+            Assert.Equal((long)Adaptation.All, c["const VERVE_ADAPT_ALL"]);
             Assert.Equal(sizeof(ResultCode), c["const sizeof_enum"]);
         }
 
         [Fact]
         public unsafe void BindingUsesTheCurrentDescriptorVersion() =>
-            Assert.Equal(Probe.Value["const VERVE_AGENT_DESC_SIZE_V3"], sizeof(verve_agent_desc));
+            Assert.Equal(Probe.Value["const VERVE_AGENT_DESC_SIZE_V4"], sizeof(verve_agent_desc));
 
         [Fact]
         public unsafe void DescriptorDefaultsAgreeBetweenDefaultAndInit()

@@ -92,5 +92,15 @@ namespace Verve.Tests
             var ex = Assert.Throws<VerveException>(() => Cue(bound: -1f));
             Assert.Contains("policy_weight_bound", ex.Message);
         }
+
+        [Fact]
+        public void AdaptationIsOnByDefaultRoundTripsAndIsValidated()
+        {
+            Assert.Equal(Adaptation.All, new AgentOptions().Adaptation);
+            var options = new AgentOptions { Actions = 2, Adaptation = Adaptation.None }.AddContinuousSensor(false);
+            using (var agent = new Agent(options)) Assert.Equal(Adaptation.None, agent.Options.Adaptation);
+            var ex = Assert.Throws<VerveException>(() => new Agent(new AgentOptions { Actions = 2, Adaptation = (Adaptation)8 }));
+            Assert.Contains("adaptation", ex.Message);
+        }
     }
 }

@@ -34,6 +34,7 @@ int main(void) {
     FIELD(verve_agent_desc, discrete_prediction);
     FIELD(verve_agent_desc, max_rbfs);
     FIELD(verve_agent_desc, policy_weight_bound);
+    FIELD(verve_agent_desc, adaptation);
 
     SIZE(verve_agent_stats);
     FIELD(verve_agent_stats, struct_size);
@@ -63,6 +64,8 @@ int main(void) {
 
     printf("const VERVE_AGENT_DESC_SIZE_V2 %u\n", (unsigned)VERVE_AGENT_DESC_SIZE_V2);
     printf("const VERVE_AGENT_DESC_SIZE_V3 %u\n", (unsigned)VERVE_AGENT_DESC_SIZE_V3);
+    printf("const VERVE_AGENT_DESC_SIZE_V4 %u\n", (unsigned)VERVE_AGENT_DESC_SIZE_V4);
+    printf("const VERVE_ADAPT_ALL %u\n", (unsigned)VERVE_ADAPT_ALL);
     printf("const VERVE_GREEDY %d\n", VERVE_ACTION_GREEDY);
     printf("const VERVE_VERSION_NUMBER %d\n", VERVE_VERSION_NUMBER);
     printf("const VERVE_MAX_DISCRETE_SENSORS %d\n", VERVE_MAX_DISCRETE_SENSORS);

@@ -57,6 +57,7 @@ namespace Verve
             DiscretePrediction = (DiscretePrediction)d.discrete_prediction;
             MaxRbfs = (long)d.max_rbfs;
             PolicyWeightBound = d.policy_weight_bound;
+            Adaptation = (Adaptation)d.adaptation;
         }
 
         /// <summary>Value count of each discrete sensor, in observation order.</summary>
@@ -125,6 +126,9 @@ namespace Verve
         /// <summary>Above 0, every actor weight stays within +-bound, so a habit can be unlearned when the
         /// world changes (with a slow critic and a large policy multiplier); 0 (default): unbounded.</summary>
         public float PolicyWeightBound { get; set; }
+        /// <summary>Settings the agent sets for itself from what it experiences (default
+        /// <see cref="Verve.Adaptation.All"/>); <see cref="Verve.Adaptation.None"/> keeps every setting as given.</summary>
+        public Adaptation Adaptation { get; set; }
 
         /// <summary>Adds a discrete sensor reading integers 0 .. <paramref name="values"/> - 1.</summary>
         public AgentOptions AddDiscreteSensor(int values)
@@ -181,6 +185,7 @@ namespace Verve
             d.discrete_prediction = (uint)DiscretePrediction;
             d.max_rbfs = MaxRbfs < 0 ? ulong.MaxValue : (ulong)MaxRbfs; // negative: refused by the library
             d.policy_weight_bound = PolicyWeightBound;
+            d.adaptation = (ulong)Adaptation;
             return d;
         }
 

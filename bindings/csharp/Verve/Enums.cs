@@ -1,3 +1,5 @@
+using System;
+
 namespace Verve
 {
     /// <summary>How RBFs of continuous sensors are created (<c>verve_rbf_allocation</c>).</summary>
@@ -7,6 +9,20 @@ namespace Verve
         Dynamic = 0,
         /// <summary>The whole lattice is created up front.</summary>
         Full = 1,
+    }
+
+    /// <summary>Settings an agent sets for itself from what it experiences (<c>VERVE_ADAPT_*</c> bits).</summary>
+    [Flags]
+    public enum Adaptation : ulong
+    {
+        /// <summary>Every setting as given (as the thesis ran its experiments).</summary>
+        None = 0,
+        /// <summary>The discount horizon follows how long trials last; <c>TauDiscount</c> is its shortest.</summary>
+        Horizon = 1,
+        /// <summary>The actor's steps stay reward-sized when TD errors grow with a long horizon.</summary>
+        ActorScale = 2,
+        /// <summary>Both (the default).</summary>
+        All = Horizon | ActorScale,
     }
 
     /// <summary>Intrinsic reward added during planning (<c>verve_curiosity</c>).</summary>

@@ -124,12 +124,15 @@ static class MonoHost
 
         Check("Agent.Update(Single, ReadOnlySpan<Int32>, ReadOnlySpan<Single>, Single, ReadOnlySpan<Byte>); " +
               "Agent.get_ActionProbabilities(); Agent.get_ActionSelection(); Agent.set_ActionSelection(ActionSelection); " +
-              "Agent.TruncateEpisode(Single); AgentOptions.set_PolicyWeightBound(Single); AgentOptions.get_PolicyWeightBound()", () =>
+              "Agent.TruncateEpisode(Single); AgentOptions.set_PolicyWeightBound(Single); AgentOptions.get_PolicyWeightBound(); " +
+              "AgentOptions.set_Adaptation(Adaptation); AgentOptions.get_Adaptation()", () =>
         {
-            var options = new AgentOptions { Actions = 3, PolicyWeightBound = 4f }.AddContinuousSensor(false);
+            Require(new AgentOptions().Adaptation == Adaptation.All, "the adaptations are not on by default");
+            var options = new AgentOptions { Actions = 3, PolicyWeightBound = 4f, Adaptation = Adaptation.Horizon }.AddContinuousSensor(false);
             using (var agent = new Agent(options))
             {
                 Require(agent.Options.PolicyWeightBound == 4f, "PolicyWeightBound did not reach the agent");
+                Require(agent.Options.Adaptation == Adaptation.Horizon, "Adaptation did not reach the agent");
                 ReadOnlySpan<byte> onlyFirst = new byte[] { 1, 0, 0 };
                 for (int i = 0; i < 20; ++i)
                 {

@@ -40,6 +40,7 @@ static const vg_option vg_options[] = {
     VG_OPTION("discrete_prediction", discrete_prediction, VG_ENUM, vg_prediction_names),
     VG_OPTION("max_rbfs", max_rbfs, VG_UINT64, NULL),
     VG_OPTION("policy_weight_bound", policy_weight_bound, VG_FLOAT, NULL),
+    VG_OPTION("adaptation", adaptation, VG_UINT64, NULL),
 };
 #define VG_OPTION_COUNT (sizeof vg_options / sizeof vg_options[0])
 

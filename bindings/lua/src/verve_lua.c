@@ -152,6 +152,7 @@ static const lv_field lv_fields[] = {
     LV_FIELD("discrete_prediction", discrete_prediction, LV_ENUM, lv_prediction_names),
     LV_FIELD("max_rbfs", max_rbfs, LV_UINT64, NULL),
     LV_FIELD("policy_weight_bound", policy_weight_bound, LV_FLOAT, NULL),
+    LV_FIELD("adaptation", adaptation, LV_UINT64, NULL),
 };
 #define LV_FIELD_COUNT (sizeof lv_fields / sizeof lv_fields[0])
 

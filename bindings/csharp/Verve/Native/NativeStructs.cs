@@ -41,6 +41,7 @@ namespace Verve.Native
         public uint discrete_prediction;
         public ulong max_rbfs; // V3
         public float policy_weight_bound;
+        public ulong adaptation; // V4
     }
 
     [StructLayout(LayoutKind.Sequential)]
