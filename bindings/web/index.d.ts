@@ -57,6 +57,8 @@ export interface AgentDescriptor {
   maxRbfs?: number | bigint;
   /** > 0: actor weights stay within ±bound; 0: unbounded (default). */
   policyWeightBound?: number;
+  /** What the agent sets for itself: bits 1 (horizon), 2 (actor scale); default 3, 0: every setting as given. */
+  adaptation?: number | bigint;
 }
 
 /** A descriptor as read back: every field present, continuous as a list. */

@@ -19,6 +19,7 @@ export const CART_POLE_AGENT = Object.freeze({
   resolution: 8,
   tauValue: 0.001,
   policyMultiplier: 50,
+  adaptation: 0,   // the thesis's fixed horizon, as samples/scenes/cart_pole_scene.cpp runs it
 });
 
 export class CartPole {

@@ -16,9 +16,9 @@ export const L = Object.freeze({
   learnFromRealSteps: 24, discretePrediction: 25, maxRbfs: 26, policyWeightBound: 27,
   statsSteps: 28, statsRbfCount: 29, statsLiveTraces: 30, statsValue: 31, statsTdError: 32,
   statsModelError: 33, statsPredictedUncertainty: 34, statsPlanningSteps: 35, statsCuriosityReward: 36,
-  statsRbfBudgetHits: 37, statsClampedRewards: 38, batchWorkerCount: 39,
+  statsRbfBudgetHits: 37, statsClampedRewards: 38, batchWorkerCount: 39, adaptation: 40,
 });
-export const LAYOUT_LENGTH = 40;
+export const LAYOUT_LENGTH = 41;
 
 const ENUMS = {
   allocation: ['dynamic', 'full'],
@@ -48,6 +48,7 @@ const SCALARS = [
   ['discretePrediction', 'discretePrediction', 'enum'],
   ['maxRbfs', 'maxRbfs', 'u64'],
   ['policyWeightBound', 'policyWeightBound', 'f32'],
+  ['adaptation', 'adaptation', 'u64'],
 ];
 const KNOWN = new Set(['discrete', 'continuous', ...SCALARS.map(([name]) => name)]);
 

@@ -84,6 +84,8 @@ test('descriptors: unknown fields, wrong types and values the library refuses', 
     [{ allocation: 'all' }, /'dynamic', 'full'/],
     [{ planning: 1 }, /boolean/],
     [{ discrete: [0] }, /discrete/],
+    [{ adaptation: -1 }, /adaptation/],
+    [{ adaptation: 8 }, /adaptation/],
     [null, /object/],
     [[], /object/],
   ];
@@ -98,7 +100,7 @@ test('descriptors: unknown fields, wrong types and values the library refuses', 
 });
 
 test('a descriptor read back creates the same agent', () => {
-  const desc = { discrete: [3, 5], continuous: [{ circular: true }], actions: 4, resolution: 7, tauValue: 0.25, seed: 99, planning: true, curiosity: 'novelty', policyWeightBound: 2 };
+  const desc = { discrete: [3, 5], continuous: [{ circular: true }], actions: 4, resolution: 7, tauValue: 0.25, seed: 99, planning: true, curiosity: 'novelty', policyWeightBound: 2, adaptation: 1 };
   const agent = verve.createAgent(desc);
   const back = agent.descriptor();
   for (const [k, v] of Object.entries(desc)) {

@@ -22,6 +22,8 @@ static const uint32_t layout[] = {
     S(planning_steps), S(curiosity_reward), S(rbf_budget_hits), S(clamped_rewards),
     /* 39: verve_batch_desc */
     (uint32_t)offsetof(verve_batch_desc, worker_count),
+    /* 40: verve_agent_desc, V4 */
+    D(adaptation),
 };
 
 /* The table above and its length. */
