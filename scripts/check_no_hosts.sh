@@ -1,6 +1,6 @@
 #!/usr/bin/env bash
-# Fails if any tracked file names a package host: a Debian or Ubuntu mirror, NuGet, npm, PyPI, crates.io,
-# RubyGems, Maven Central, the Go module proxy, Packagist, LuaRocks, Docker Hub, Microsoft's or Mono's
+# Fails if any tracked file names a package host: a Debian or Ubuntu mirror, NuGet, npm, PyPI, Rust's
+# crates registry, RubyGems, Maven Central, the Go module proxy, Packagist, LuaRocks, Docker Hub, Microsoft's or Mono's
 # package feeds. Where packages come from is the machine's business (its apt sources, the .NET SDK's
 # configured NuGet sources), never the repository's: scripts/fetch_source.sh reads the mirror from the
 # machine's apt sources. Nothing is allowed, docs included; a link to documentation (learn.microsoft.com,
@@ -36,9 +36,9 @@ hosts=(
 pattern="(^|[^a-z0-9.-])($(IFS='|'; echo "${hosts[*]}"))([^a-z0-9-]|$)"
 
 # The check must catch what it is for (the names are split so that this file names none of them).
-for planted in "URIs: http://deb.""debian.org/debian" "deb http://ftp.de.""debian.org/debian bookworm main" \
-    '<add key="x" value="https://api.''nuget.org/v3/index.json" />' "from NuGet.""org" \
-    "https://registry.""npmjs.org/" "pip install -i https://pypi.""org/simple x"; do
+for planted in "URIs: http://deb.deb""ian.org/debian" "deb http://ftp.de.deb""ian.org/debian bookworm main" \
+    '<add key="x" value="https://api.nu''get.org/v3/index.json" />' "from NuGet"".org" \
+    "https://registry.npm""js.org/" "pip install -i https://py""pi.org/simple x"; do
   grep -q -i -E "$pattern" <<<"$planted" || { echo "check_no_hosts.sh: the pattern misses: $planted" >&2; exit 2; }
 done
 for fine in "https://learn.microsoft.com/dotnet/core/install/linux-debian" "apt-get install godot3-server" \
