@@ -24,6 +24,9 @@ static size_t vw_first; /* the oldest message not yet handed over */
 static size_t vw_count;
 static size_t vw_dropped;
 static int vw_installed;
+static void (*vw_echo)(const char* message);
+
+void vw_set_echo(void (*echo)(const char* message)) { vw_echo = echo; }
 
 static void VERVE_CALL vw_log(void* user, verve_log_level level, const char* message) {
     (void)user;
@@ -37,6 +40,7 @@ static void VERVE_CALL vw_log(void* user, verve_log_level level, const char* mes
         ++vw_dropped;
     }
     VW_UNLOCK();
+    if (vw_echo) vw_echo(message ? message : "");
 }
 
 int vw_install(void) {

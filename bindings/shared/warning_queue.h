@@ -19,6 +19,10 @@
  * (agents exist that this binding did not see created); verve_last_error() says why. */
 int vw_install(void);
 
+/* Also hands each warning, as it comes, to echo (NULL: none), outside the queue's lock and on the
+ * thread that warns: the Godot plugin prints it in the engine's output. Set it before vw_install. */
+void vw_set_echo(void (*echo)(const char* message));
+
 /* Calls each(user, message) for every queued message, oldest first, then empties the queue. When
  * messages were dropped for lack of room, a last one says how many. Returns the number handed over.
  * Called outside the queue's lock, so each may call Verve. */
