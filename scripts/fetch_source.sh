@@ -18,7 +18,8 @@ state=$dest/.apt-$pkg
 mkdir -p "$state/sources.list.d" "$state/lists/partial" "$state/dl"
 # The mirror is the machine's own: the first release suite (no "-updates"/"-security") of a "deb" entry
 # in /etc/apt/sources.list.d/*.sources (deb822) or /etc/apt/sources.list{,.d/*.list} (one-line form).
-# VERVE_APT_ETC names another folder to read them from (the parser's own test).
+# For the parser's own test (scripts/check_fetch_source_mirror.sh): VERVE_APT_ETC names another folder
+# to read them from, and VERVE_FETCH_SOURCE_PRINT_MIRROR=1 prints what was found instead of fetching.
 etc=${VERVE_APT_ETC:-/etc/apt}
 mirror=$(
   { cat "$etc"/sources.list.d/*.sources 2>/dev/null; echo; } | awk '

@@ -8,6 +8,7 @@ cd "$(dirname "$0")/.."
 
 echo "== no package host named in the repository (scripts/check_no_hosts.sh)"
 ./scripts/check_no_hosts.sh
+./scripts/check_fetch_source_mirror.sh
 
 ./scripts/setup.sh --test
 ./scripts/build.sh
