@@ -16,13 +16,53 @@ if [ -d "$dest/$pkg" ]; then exit 0; fi
 
 state=$dest/.apt-$pkg
 mkdir -p "$state/sources.list.d" "$state/lists/partial" "$state/dl"
-cat > "$state/sources.list.d/src.sources" <<SRC
-Types: deb-src
-URIs: http://deb.debian.org/debian
-Suites: bookworm
-Components: main
-Signed-By: /usr/share/keyrings/debian-archive-keyring.gpg
-SRC
+# The mirror is the machine's own: the first release suite (no "-updates"/"-security") of a "deb" entry
+# in /etc/apt/sources.list.d/*.sources (deb822) or /etc/apt/sources.list{,.d/*.list} (one-line form).
+# For the parser's own test (scripts/check_fetch_source_mirror.sh): VERVE_APT_ETC names another folder
+# to read them from, and VERVE_FETCH_SOURCE_PRINT_MIRROR=1 prints what was found instead of fetching.
+etc=${VERVE_APT_ETC:-/etc/apt}
+mirror=$(
+  { cat "$etc"/sources.list.d/*.sources 2>/dev/null; echo; } | awk '
+    function flush() {
+      if (types ~ /(^| )deb( |$)/ && uri != "" && suite != "")
+        { print uri "|" suite "|" comps "|" signed; found = 1; exit }
+      types = uri = suite = comps = signed = ""
+    }
+    /^[ \t]*$/ { flush(); next }
+    /^#/ { next }
+    /^Types:/ { sub(/^Types:[ \t]*/, ""); types = $0 }
+    /^URIs:/ { uri = $2 }
+    /^Suites:/ { for (i = 2; i <= NF; i++) if ($i !~ /-/) { suite = $i; break } }
+    /^Components:/ { sub(/^Components:[ \t]*/, ""); comps = $0 }
+    /^Signed-By:/ { signed = $2 }
+    END { if (!found) flush() }' || true
+)
+if [ -z "$mirror" ]; then
+  mirror=$(cat "$etc/sources.list" "$etc"/sources.list.d/*.list 2>/dev/null | awk '
+    $1 == "deb" {
+      i = 2; opts = ""
+      if ($i ~ /^\[/) { while ($i !~ /\]$/) opts = opts " " $(i++); opts = opts " " $(i++) }
+      if ($(i + 1) ~ /-/) next
+      signed = ""; if (match(opts, /signed-by=[^] ]+/)) signed = substr(opts, RSTART + 10, RLENGTH - 10)
+      comps = ""; for (j = i + 2; j <= NF; j++) comps = comps (comps ? " " : "") $j
+      print $i "|" $(i + 1) "|" comps "|" signed; exit
+    }' || true)
+fi
+if [ -z "$mirror" ]; then
+  echo "fetch_source.sh: no Debian mirror in this machine's apt sources (no \"deb\" entry for a release" >&2
+  echo "suite in $etc/sources.list.d/*.sources or $etc/sources.list); add one and rerun." >&2
+  rm -rf "$state"
+  exit 1
+fi
+IFS='|' read -r uri suite comps signed <<<"$mirror"
+if [ -n "${VERVE_FETCH_SOURCE_PRINT_MIRROR:-}" ]; then echo "$uri $suite $comps $signed"; rm -rf "$state"; exit 0; fi
+{
+  echo "Types: deb-src"
+  echo "URIs: $uri"
+  echo "Suites: $suite"
+  echo "Components: ${comps:-main}"
+  if [ -n "$signed" ]; then echo "Signed-By: $signed"; fi
+} > "$state/sources.list.d/src.sources"
 apt_opts=(-o "Dir::Etc::SourceParts=$state/sources.list.d" -o Dir::Etc::SourceList=/dev/null
   -o "Dir::State::Lists=$state/lists" -o APT::Sandbox::User=root)
 apt-get "${apt_opts[@]}" update -qq

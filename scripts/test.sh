@@ -1,10 +1,14 @@
 #!/usr/bin/env bash
-# Sets up, builds and runs every test suite: C++ core, learning, tasks, scenes, C ABI, Lua and the
-# LÖVE game (CTest), the web build (test_web.sh), the commands the docs give (check_docs.sh), the
-# fuzz targets briefly, the Windows build's C ABI suites under Wine, then the C# binding (dotnet
-# test) against libverve.so.
+# Checks that no tracked file names a package host, then sets up, builds and runs every test suite:
+# C++ core, learning, tasks, scenes, C ABI, Lua and the LÖVE game (CTest), the web build
+# (test_web.sh), the commands the docs give (check_docs.sh), the fuzz targets briefly, the Windows
+# build's C ABI suites under Wine, then the C# binding (dotnet test) against libverve.so.
 set -euo pipefail
 cd "$(dirname "$0")/.."
+
+echo "== no package host named in the repository (scripts/check_no_hosts.sh)"
+./scripts/check_no_hosts.sh
+./scripts/check_fetch_source_mirror.sh
 
 ./scripts/setup.sh --test
 ./scripts/build.sh

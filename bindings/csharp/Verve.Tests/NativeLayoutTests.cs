@@ -37,6 +37,7 @@ namespace Verve.Tests
         [InlineData(typeof(verve_agent_stats), "verve_agent_stats")]
         [InlineData(typeof(ValueAxis), "verve_value_axis")]
         [InlineData(typeof(verve_batch_desc), "verve_batch_desc")]
+        [InlineData(typeof(verve_hooks), "verve_hooks")]
         public void StructMatchesC(Type mirror, string cName)
         {
             Assert.Equal(Probe.Value["size " + cName], Marshal.SizeOf(mirror));

@@ -62,6 +62,15 @@ int main(void) {
     FIELD(verve_batch_desc, finish_task);
     FIELD(verve_batch_desc, user_context);
 
+    SIZE(verve_hooks);
+    FIELD(verve_hooks, struct_size);
+    FIELD(verve_hooks, malloc_fn);
+    FIELD(verve_hooks, realloc_fn);
+    FIELD(verve_hooks, free_fn);
+    FIELD(verve_hooks, alloc_user);
+    FIELD(verve_hooks, log_fn);
+    FIELD(verve_hooks, log_user);
+
     printf("const VERVE_AGENT_DESC_SIZE_V2 %u\n", (unsigned)VERVE_AGENT_DESC_SIZE_V2);
     printf("const VERVE_AGENT_DESC_SIZE_V3 %u\n", (unsigned)VERVE_AGENT_DESC_SIZE_V3);
     printf("const VERVE_AGENT_DESC_SIZE_V4 %u\n", (unsigned)VERVE_AGENT_DESC_SIZE_V4);

@@ -32,6 +32,7 @@ namespace Verve
         // Called before the first struct crosses the boundary: a mismatched library would misread it.
         internal static void EnsureCompatible()
         {
+            WarningLog.Install(); // before any agent exists, or libverve refuses the hook
             if (s_checked) return;
             int native = NativeVersionNumber;
             if (!IsCompatible(native))
@@ -39,6 +40,15 @@ namespace Verve
                     $"libverve {ToVersion(native)} does not match the Verve C# binding {BindingVersion}");
             s_checked = true;
         }
+
+        /// <summary>libverve's warnings since the previous call, oldest first (usually none): a reward
+        /// clamped to [-1, 1] or an agent's RBF budget reached, each reported once per agent and also
+        /// counted in <see cref="AgentStats.ClampedRewards"/> and <see cref="AgentStats.RbfBudgetHits"/>.
+        /// At most 64 are kept between calls; a last entry then says how many more came. The binding
+        /// installs libverve's log hook (verve_set_hooks) before its first agent, brain or batch; if
+        /// libverve already held memory then (another binding's agents in the same process), none are
+        /// collected.</summary>
+        public static string[] TakeWarnings() => WarningLog.Take();
 
         private static Version ToVersion(int number) => new Version((number >> 16) & 0xff, (number >> 8) & 0xff, number & 0xff);
     }

@@ -114,6 +114,22 @@ static class MonoHost
             Require(s.ToString().StartsWith("steps=" + s.Steps, StringComparison.Ordinal), "AgentStats.ToString: " + s);
         });
 
+        // The log hook is a native-to-managed callback: it must be callable under Mono (and IL2CPP).
+        Check("VerveLibrary.TakeWarnings()", () =>
+        {
+            VerveLibrary.TakeWarnings();
+            using (var agent = new Agent(new AgentOptions { Actions = 2 }.AddDiscreteSensor(2)))
+            {
+                agent.Update(0f, new[] { 0 }, null, 0.1f);
+                agent.Update(4.5f, new[] { 1 }, null, 0.1f);
+                Require(agent.Stats.ClampedRewards == 1, "ClampedRewards: " + agent.Stats);
+                string[] warnings = VerveLibrary.TakeWarnings();
+                Require(warnings.Length == 1 && warnings[0].Contains("a reward of 4.5 was clamped to [-1, 1]"),
+                        "warnings: " + string.Join(" | ", warnings));
+                Require(VerveLibrary.TakeWarnings().Length == 0, "a second read repeated the warning");
+            }
+        });
+
         Check("Agent.get_Learning(); Agent.set_Learning(Boolean)", () =>
         {
             Require(s_agent.Learning, "a new agent does not learn");

@@ -267,6 +267,8 @@ VG_METHOD(get_stats) {
     vg_dict_set(&dict, "predicted_uncertainty", vg_variant_real(s.predicted_uncertainty));
     vg_dict_set(&dict, "planning_steps", vg_variant_int(s.planning_steps));
     vg_dict_set(&dict, "curiosity_reward", vg_variant_real(s.curiosity_reward));
+    vg_dict_set(&dict, "rbf_budget_hits", vg_variant_int((int64_t)s.rbf_budget_hits));
+    vg_dict_set(&dict, "clamped_rewards", vg_variant_int((int64_t)s.clamped_rewards));
     vg_core->godot_variant_new_dictionary(&out, &dict);
     vg_core->godot_dictionary_destroy(&dict);
     return out;

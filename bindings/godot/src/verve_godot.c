@@ -7,6 +7,7 @@
 #include "verve_agent_methods.h"
 #include "verve_batch_methods.h"
 #include "verve_brain_methods.h"
+#include "verve_warnings.h"
 
 typedef godot_variant (*vg_method_fn)(godot_object*, void*, void*, int, godot_variant**);
 
@@ -68,7 +69,13 @@ static const vg_method_info vg_agent_methods[] = {
     {"get_action_probabilities", vg_get_action_probabilities,
      "The policy's probability of each action at the latest update (what sampling drew from). -> PoolRealArray",
      0, {{0}}},
-    {"get_stats", vg_get_stats, "steps, rbf_count, live_traces, value, td_error and planning figures. -> Dictionary",
+    {"take_warnings", vg_take_warnings,
+     "libverve's warnings since the previous call, oldest first (a reward clamped to [-1, 1], an RBF budget "
+     "reached: once per agent each; also printed as they come). -> PoolStringArray",
+     0, {{0}}},
+    {"get_stats", vg_get_stats,
+     "steps, rbf_count, live_traces, value, td_error, planning figures, rbf_budget_hits and clamped_rewards. "
+     "-> Dictionary",
      0, {{0}}},
     {"sample_values", vg_sample_values,
      "V over 1 or 2 swept sensors ({\"kind\", \"index\", \"samples\"} each), the others held at the base "
@@ -199,6 +206,8 @@ static void vg_register_class(void* handle, const vg_class_info* info) {
 VG_EXPORT void godot_gdnative_init(godot_gdnative_init_options* options) {
     if (!vg_api_init(options->api_struct, options->gd_native_library))
         options->report_loading_error(options->gd_native_library, "verve: this Godot has no NativeScript");
+    else
+        vg_warnings_install(); /* before any agent: libverve takes the log hook only while it holds no memory */
 }
 
 VG_EXPORT void godot_gdnative_terminate(godot_gdnative_terminate_options* options) {

@@ -149,8 +149,32 @@ func test_episode_learning_readouts():
 	check(typeof(a.get_value()) == TYPE_REAL and typeof(a.get_td_error()) == TYPE_REAL, "value and TD error")
 	check(a.get_rbf_count() > 0 and a.get_rbf_count() == a.get_stats()["rbf_count"], "rbf count")
 	for key in ["steps", "rbf_count", "live_traces", "value", "td_error", "model_error", "predicted_uncertainty",
-			"planning_steps", "curiosity_reward"]:
+			"planning_steps", "curiosity_reward", "rbf_budget_hits", "clamped_rewards"]:
 		check(a.get_stats().has(key), "stats has " + key)
+
+
+# clamped_rewards and rbf_budget_hits in get_stats(), and libverve's warnings through take_warnings()
+# (also printed in the engine's output as they come: the two WARNING lines in this test's log).
+func test_warnings():
+	var a = new_agent()
+	a.take_warnings()
+	check(a.take_warnings().size() == 0, "no warnings while nothing is wrong")
+	var b = new_agent({"discrete_sensors": [3], "actions": 2})
+	b.update(0.0, [0], [], 0.1)
+	b.update(6.5, [1], [], 0.1)
+	b.update(-8.0, [2], [], 0.1)
+	check(b.get_stats()["clamped_rewards"] == 2, "clamped_rewards counts both: %s" % b.get_stats())
+	check(b.get_stats()["rbf_budget_hits"] == 0, "no budget hits")
+	var w = a.take_warnings()
+	check(typeof(w) == TYPE_STRING_ARRAY and w.size() == 1 and "a reward of 6.5 was clamped to [-1, 1]" in w[0],
+		"one clamp warning per agent: %s" % [w])
+	check(a.take_warnings().size() == 0, "a second read returns what came since the first")
+	var c = new_agent({"continuous_sensor_circular": [false], "actions": 2, "max_rbfs": 2})
+	for i in range(21):
+		c.update(0.0, [], [-1.0 + 0.1 * i], 0.1)
+	check(c.get_stats()["rbf_count"] <= 2 and c.get_stats()["rbf_budget_hits"] > 0, "budget hits: %s" % c.get_stats())
+	w = c.take_warnings()
+	check(w.size() == 1 and "the RBF budget (max_rbfs = 2) is reached" in w[0], "one budget warning: %s" % [w])
 
 
 func test_sample_values():
@@ -267,6 +291,7 @@ func _init():
 	test_bad_options()
 	test_update()
 	test_episode_learning_readouts()
+	test_warnings()
 	test_sample_values()
 	test_persistence()
 	test_no_agent()

@@ -13,6 +13,7 @@
 #include <verve_c.h>
 
 #include "lua_compat.h"
+#include "lua_warnings.h"
 
 #if defined(_WIN32)
 #  define LV_EXPORT __declspec(dllexport)
@@ -1007,6 +1008,7 @@ static const luaL_Reg lv_module[] = {
     {"load_brain", lv_load_brain},
     {"load_brain_string", lv_load_brain_string},
     {"batch", lv_new_batch},
+    {"warnings", lv_warnings},
     {NULL, NULL},
 };
 
@@ -1029,6 +1031,8 @@ LV_EXPORT int luaopen_verve(lua_State* L) {
         return luaL_error(L, "verve: the module needs libverve %d.%d.x (>= %d.%d.%d) but found %d.%d.%d",
                           VERVE_VERSION_MAJOR, VERVE_VERSION_MINOR, VERVE_VERSION_MAJOR, VERVE_VERSION_MINOR,
                           VERVE_VERSION_PATCH, (int)(v >> 16), (int)((v >> 8) & 0xff), (int)(v & 0xff));
+    /* Before any agent exists: the log hook can only be installed while libverve holds no memory. */
+    lv_install_warnings();
     lv_register_type(L, LV_AGENT_MT, lv_agent_meta, lv_agent_methods);
     lv_register_type(L, LV_BRAIN_MT, lv_brain_meta, lv_brain_methods);
     lv_register_type(L, LV_BATCH_MT, lv_batch_meta, lv_batch_methods);

@@ -26,6 +26,9 @@ namespace Verve.Native
         internal static extern IntPtr verve_result_name(ResultCode result);
 
         [DllImport(Library, CallingConvention = CallingConvention.Cdecl)]
+        internal static extern ResultCode verve_set_hooks(verve_hooks* hooks);
+
+        [DllImport(Library, CallingConvention = CallingConvention.Cdecl)]
         internal static extern void verve_agent_desc_default(void* desc);
 
         [DllImport(Library, CallingConvention = CallingConvention.Cdecl)]

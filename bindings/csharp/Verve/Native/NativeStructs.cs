@@ -71,5 +71,17 @@ namespace Verve.Native
         public IntPtr user_context;
     }
 
+    [StructLayout(LayoutKind.Sequential)]
+    internal struct verve_hooks
+    {
+        public uint struct_size;
+        public IntPtr malloc_fn; // the allocator hooks: always NULL from C# (the C library's)
+        public IntPtr realloc_fn;
+        public IntPtr free_fn;
+        public IntPtr alloc_user;
+        public IntPtr log_fn;    // WarningLog.OnWarning
+        public IntPtr log_user;
+    }
+
 #pragma warning restore IDE1006
 }
