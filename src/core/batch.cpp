@@ -38,7 +38,8 @@ public:
     std::uint32_t of(const BrainState* brain) {
         if (brain == last_) return lastGroup_;  // a crowd's bodies usually come together
         const std::size_t mask = slots_.size() - 1;
-        std::size_t at = (reinterpret_cast<std::uintptr_t>(brain) >> 4) * 0x9E3779B97F4A7C15ull >> 7 & mask;
+        const std::uint64_t key = static_cast<std::uint64_t>(reinterpret_cast<std::uintptr_t>(brain) >> 4);
+        std::size_t at = static_cast<std::size_t>((key * 0x9E3779B97F4A7C15ull) >> 32) & mask;
         while (slots_[at].brain != nullptr && slots_[at].brain != brain) at = (at + 1) & mask;
         if (slots_[at].brain == nullptr) slots_[at] = Slot{brain, groups_++};
         last_ = brain;
