@@ -8,6 +8,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdio>
 #include <string>
 #include <thread>
 #include <vector>
@@ -185,6 +186,60 @@ TEST(AllocationFailure, DestroyingABrainInsideOneOfItsCallsIsRefused) {
     uint32_t count = 0;
     EXPECT_EQ(verve_brain_get_rbf_count(d.brain, &count), VERVE_OK) << "the brain survived";
     verve_brain_destroy(d.brain);
+    ASSERT_EQ(verve_set_hooks(nullptr), VERVE_OK) << lastError();
+}
+
+// Issue 32: a file save holds the brain's flag only while it serialises; the disk write comes
+// after, so a body's update meanwhile is let in (it was refused for the whole write before). The
+// host's allocator, called throughout the save (the write's paths and names allocate too), plays
+// the game's other thread updating a body at every moment of it.
+struct Updater {
+    CountingAllocator counting;
+    verve_agent* body = nullptr;
+    bool armed = false, inside = false;
+    int refused = 0, updated = 0;
+    static void* VERVE_CALL allocate(void* user, size_t size) {
+        auto* self = static_cast<Updater*>(user);
+        if (self->armed && !self->inside) {
+            self->inside = true;
+            const float c[2] = {0.3f, -0.2f};
+            const int32_t disc = 1;
+            uint32_t action = 0;
+            const verve_result r = verve_agent_update(self->body, 0.0f, &disc, 1, c, 2, 0.1f, &action);
+            (r == VERVE_OK ? self->updated : self->refused) += 1;
+            self->inside = false;
+        }
+        return CountingAllocator::allocate(&self->counting, size);
+    }
+    static void VERVE_CALL release(void* user, void* block) { CountingAllocator::release(&static_cast<Updater*>(user)->counting, block); }
+};
+
+TEST(AllocationFailure, ABodyUpdatesWhileItsBrainSaveWritesTheFile) {
+    Updater u;
+    verve_hooks hooks{};
+    hooks.struct_size = VERVE_HOOKS_SIZE_V1;
+    hooks.malloc_fn = &Updater::allocate;
+    hooks.free_fn = &Updater::release;
+    hooks.alloc_user = &u;
+    ASSERT_EQ(verve_set_hooks(&hooks), VERVE_OK) << lastError();
+    const verve_agent_desc desc = mixedDesc(false, 3);
+    verve_brain* brain = nullptr;
+    ASSERT_EQ(verve_brain_create(&desc, &brain), VERVE_OK) << lastError();
+    ASSERT_EQ(verve_brain_create_body(brain, &u.body), VERVE_OK) << lastError();
+    const std::string path = ::testing::TempDir() + "verve_brain_autosave.xml";
+    u.armed = true;
+    ASSERT_EQ(verve_brain_save(brain, path.c_str()), VERVE_OK) << lastError();
+    u.armed = false;
+    EXPECT_GT(u.refused, 0) << "no allocation while serialising?";
+    EXPECT_GT(u.updated, 0) << "every update during the save was refused: the disk write held the brain's flag";
+    RecordProperty("updatesRefused", u.refused);
+    RecordProperty("updatesLetIn", u.updated);
+    verve_brain* loaded = nullptr;
+    ASSERT_EQ(verve_brain_load(path.c_str(), &loaded), VERVE_OK) << lastError();
+    verve_brain_destroy(loaded);
+    std::remove(path.c_str());
+    verve_agent_destroy(u.body);
+    verve_brain_destroy(brain);
     ASSERT_EQ(verve_set_hooks(nullptr), VERVE_OK) << lastError();
 }
 
