@@ -70,7 +70,7 @@ void takeModeAndOwner(int fd, const std::string& replacing, const std::string& p
     if (replacing.empty() || ::stat(replacing.c_str(), &old) != 0 || !S_ISREG(old.st_mode)) return;
     struct stat now;
     if (::fstat(fd, &now) != 0) fail("cannot read", path, errno);
-    mode_t mode = old.st_mode & 07777;
+    mode_t mode = old.st_mode & 0777;  // not set-id or sticky bits: a save is data
     if ((now.st_uid != old.st_uid || now.st_gid != old.st_gid) && ::fchown(fd, old.st_uid, old.st_gid) != 0) {
         mode &= 0700;  // owned by someone else now: no one but the owner may read it
     }

@@ -142,7 +142,7 @@ TEST_F(SaveEdgeCases, SavingOverAFileKeepsItsPermissionsAndOwner) {
         saveAgent(agent, target.string());
         struct stat st;
         ASSERT_EQ(::stat(target.c_str(), &st), 0);
-        EXPECT_EQ(st.st_mode & 07777, mode) << std::oct << "mode " << mode << " became " << (st.st_mode & 07777);
+        EXPECT_EQ(st.st_mode & 0777, mode) << std::oct << "mode " << mode << " became " << (st.st_mode & 0777);
         if (::geteuid() == 0) {
             EXPECT_EQ(st.st_uid, 65534u);
             EXPECT_EQ(st.st_gid, 65534u);
