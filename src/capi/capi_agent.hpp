@@ -65,7 +65,7 @@ public:
     explicit AgentUse(Handle* handle) : handle_(handle) {
         requireArg(handle, "agent");
         use_.take(handle->inUse);
-        if (handle->brainInUse != nullptr) use_.take(*handle->brainInUse);
+        if (handle->brainInUse != nullptr) use_.takeShared(*handle->brainInUse);
     }
 
     // The agent, const for the read-only calls; a change goes through mutableAgent (save cache).

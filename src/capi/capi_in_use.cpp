@@ -11,23 +11,21 @@ void refuseInUse() {
                 "the agent is in use by another call right now (one agent is used by one thread at a time)");
 }
 
-bool InUse::holds(const InUseFlag* flag) const noexcept {
-    if (std::find(inline_, inline_ + few_, flag) != inline_ + few_) return true;
-    return many_ != nullptr && std::find(many_->begin(), many_->end(), flag) != many_->end();
-}
-
-void InUse::take(InUseFlag& flag) {
+void InUse::take(InUseFlag& flag, std::vector<InUseFlag*>* held) {
     if (!tryAcquire(flag)) {
-        if (holds(&flag)) return;  // looked up only when the flag is already taken
+        // Held already by this call, or by another: looked up only when the flag is taken.
+        const bool ours = held != nullptr ? std::find(held->begin(), held->end(), &flag) != held->end()
+                                          : std::find(inline_, inline_ + few_, &flag) != inline_ + few_;
+        if (ours) return;
         refuseInUse();
     }
-    if (many_ != nullptr) {
-        many_->push_back(&flag);  // within the reserved capacity: cannot throw
+    if (held != nullptr) {
+        held->push_back(&flag);  // within the reserved capacity: cannot throw
     } else if (few_ < 2) {
         inline_[few_++] = &flag;
     } else {
         release(flag);
-        throw Error(ErrorCode::Internal, "InUse holds at most two flags without a vector");
+        throw Error(ErrorCode::Internal, "InUse holds at most two flags without vectors");
     }
 }
 

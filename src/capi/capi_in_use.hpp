@@ -19,33 +19,43 @@ inline void release(InUseFlag& flag) noexcept { flag.store(false, std::memory_or
 // Throws Error(InvalidState): the handle is in use by another call right now.
 [[noreturn]] void refuseInUse();
 
-// The flags one call holds, given back (in reverse) when it ends, however it ends. Up to two are
-// kept inline (an agent and its brain: no allocation); a batch lends a vector it reuses (its
-// capacity reserved before the first take, so a flag once taken is always recorded).
+// The flags one call holds, given back when it ends, however it ends. Up to two are kept inline
+// (an agent and its brain: no allocation). A batch lends two vectors it reuses, with capacity
+// reserved before the first take (so a flag once taken is always recorded): one for its agents'
+// flags, one for their brains', which many bodies share: a flag already held is looked up among
+// its own kind only (a crowd's bodies find their brain's among the few brains, not the agents).
 class InUse {
 public:
     InUse() = default;
-    explicit InUse(std::vector<InUseFlag*>& many) : many_(&many) { many.clear(); }
+    InUse(std::vector<InUseFlag*>& own, std::vector<InUseFlag*>& shared) : own_(&own), shared_(&shared) {
+        own.clear();
+        shared.clear();
+    }
     ~InUse() {
-        if (many_ != nullptr) {
-            for (std::size_t i = many_->size(); i > 0; --i) release(*(*many_)[i - 1]);
-            many_->clear();
+        for (std::vector<InUseFlag*>* held : {shared_, own_}) {
+            if (held == nullptr) continue;
+            for (InUseFlag* flag : *held) release(*flag);
+            held->clear();
         }
         for (std::size_t i = few_; i > 0; --i) release(*inline_[i - 1]);
     }
     InUse(const InUse&) = delete;
     InUse& operator=(const InUse&) = delete;
 
-    // Takes `flag` for this call, or throws Error(InvalidState) when another call holds it. A flag
-    // this call holds already (an agent listed twice, two bodies of one brain) is fine.
-    void take(InUseFlag& flag);
+    // Takes an agent's (or a batch's, a brain handle's) flag for this call, or throws
+    // Error(InvalidState) when another call holds it; one this call holds already (an agent
+    // listed twice) is fine.
+    void take(InUseFlag& flag) { take(flag, own_); }
+    // The same for a flag several handles of the call share (a brain's, held by its bodies).
+    void takeShared(InUseFlag& flag) { take(flag, shared_); }
 
 private:
-    bool holds(const InUseFlag* flag) const noexcept;
+    void take(InUseFlag& flag, std::vector<InUseFlag*>* held);
 
     InUseFlag* inline_[2] = {};
     std::size_t few_ = 0;
-    std::vector<InUseFlag*>* many_ = nullptr;
+    std::vector<InUseFlag*>* own_ = nullptr;
+    std::vector<InUseFlag*>* shared_ = nullptr;
 };
 
 }  // namespace verve::capi

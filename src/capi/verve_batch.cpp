@@ -15,7 +15,8 @@ struct verve_batch {
     verve::capi::InUseFlag inUse{false};
     // Scratch reused from call to call: the agents behind the handles, the per-agent verdicts.
     std::vector<verve::Agent*> agents;
-    std::vector<verve::capi::InUseFlag*> held;  // the in-use flags this call holds (agents', brains')
+    std::vector<verve::capi::InUseFlag*> held;        // the in-use flags this call holds: its agents'
+    std::vector<verve::capi::InUseFlag*> heldBrains;  // and their brains' (capi_in_use.hpp)
     std::vector<int> results;
 };
 
@@ -102,8 +103,9 @@ VERVE_API verve_result VERVE_CALL verve_batch_update(verve_batch* batch, verve_a
         // twice is taken once.
         verve::capi::InUse batchUse;
         batchUse.take(batch->inUse);
-        batch->held.reserve(2 * std::size_t(n));
-        verve::capi::InUse use(batch->held);
+        batch->held.reserve(n);
+        batch->heldBrains.reserve(n);
+        verve::capi::InUse use(batch->held, batch->heldBrains);
         batch->agents.resize(n);
         batch->results.assign(n, 0);
         for (uint32_t i = 0; i < n; ++i) {
@@ -111,7 +113,7 @@ VERVE_API verve_result VERVE_CALL verve_batch_update(verve_batch* batch, verve_a
             batch->agents[i] = nullptr;
             if (h == nullptr) continue;  // refused below, naming the agent
             use.take(h->inUse);
-            if (h->brainInUse != nullptr) use.take(*h->brainInUse);
+            if (h->brainInUse != nullptr) use.takeShared(*h->brainInUse);
             // Through mutableAgent: an update drops the saves that verve_agent_save_memory keeps.
             batch->agents[i] = &h->mutableAgent();
         }

@@ -38,7 +38,7 @@ public:
     explicit BrainUse(const verve_brain* handle) {
         requireArg(handle, "brain");
         use_.take(handle->handleInUse);
-        use_.take(*handle->inUse);
+        use_.takeShared(*handle->inUse);
     }
 
 private:
