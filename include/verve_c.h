@@ -14,7 +14,8 @@
  *
  * Thread rules
  *  - One agent is used by one thread at a time. Different agents may be used concurrently.
- *    Overlapping calls on one agent are detected and refused with VERVE_ERROR_INVALID_STATE.
+ *    Overlapping calls on one agent are detected and refused with VERVE_ERROR_INVALID_STATE;
+ *    a destroy during another call on the handle (agent, brain, batch) leaves it alive.
  *  - A shared brain and all its bodies count as one agent. verve_batch_update spreads many
  *    agents over threads for you, one brain's bodies in their order on one worker.
  *  - verve_last_error() is per thread.
@@ -189,9 +190,10 @@ typedef void (VERVE_CALL *verve_log_fn)(void* user, verve_log_level level, const
 
 typedef struct verve_hooks {
     uint32_t struct_size;        /* sizeof(verve_hooks) */
-    /* All of Verve's memory: malloc_fn and free_fn both set, or both NULL (the C library's).
-     * Blocks must be aligned for any standard type (like malloc). realloc_fn may be NULL:
-     * this version never calls it. */
+    /* Verve's memory: malloc_fn and free_fn both set, or both NULL (the C library's). Not routed:
+     * exception objects in flight, the batch pool's thread stacks, and everything on Apple
+     * platforms (not self-contained there yet; only log_fn is taken). Blocks must be aligned for
+     * any standard type (like malloc). realloc_fn may be NULL: this version never calls it. */
     verve_malloc_fn malloc_fn;
     verve_realloc_fn realloc_fn;
     verve_free_fn free_fn;
@@ -267,8 +269,11 @@ VERVE_API verve_result VERVE_CALL verve_agent_sample_values(const verve_agent* a
     float* out, uint32_t out_count);
 
 /* ---- persistence (XML or compact binary) ------------------------------------------------- */
-/* Atomic: written to a temporary file, flushed and renamed, so the previous save survives a crash.
- * Load (file or memory) reads either format, told apart by its first bytes. */
+/* Atomic: written to a temporary file, flushed and renamed, so the previous save survives a crash;
+ * the replaced file's permissions and owner are kept. The agent is serialised under its in-use
+ * flag, the file written after the flag is given back (the disk never holds up updates). A failed
+ * directory flush is VERVE_ERROR_IO (the new save in place). Load (file or memory) reads either
+ * format, told apart by its first bytes. */
 VERVE_API verve_result VERVE_CALL verve_agent_save(const verve_agent* agent, const char* path);
 VERVE_API verve_result VERVE_CALL verve_agent_load(const char* path, verve_agent** out);
 /* To memory: call with buffer NULL (or too small) to get the size needed in *size
@@ -285,7 +290,9 @@ VERVE_API verve_result VERVE_CALL verve_agent_save_memory_binary(const verve_age
  * memory (traces, previous step, random stream) that learns into the brain's shared weights.
  * Every verve_agent_* call works on a body; saving a body saves the brain plus its memory. */
 VERVE_API verve_result VERVE_CALL verve_brain_create(const verve_agent_desc* desc, verve_brain** out);
-VERVE_API void VERVE_CALL verve_brain_destroy(verve_brain* brain); /* NULL is ignored */
+/* NULL is ignored. Refused (the brain stays alive, verve_last_error says so) while a call on the
+ * brain runs on another thread; its bodies may be in calls: they keep the brain's data alive. */
+VERVE_API void VERVE_CALL verve_brain_destroy(verve_brain* brain);
 /* Body k of a brain (k counts the bodies it made) draws from a random stream of (seed, k). */
 VERVE_API verve_result VERVE_CALL verve_brain_create_body(verve_brain* brain, verve_agent** out_body);
 VERVE_API verve_result VERVE_CALL verve_brain_get_rbf_count(const verve_brain* brain, uint32_t* out_count);
@@ -320,8 +327,9 @@ typedef struct verve_batch_desc {
 
 VERVE_API verve_result VERVE_CALL verve_batch_desc_default(verve_batch_desc* desc);
 VERVE_API verve_result VERVE_CALL verve_batch_create(const verve_batch_desc* desc, verve_batch** out);
-VERVE_API void VERVE_CALL verve_batch_destroy(verve_batch* batch); /* joins its threads; NULL is ignored */
-/* A batch is used by one thread at a time, like an agent. */
+/* Joins its threads; NULL is ignored; refused (the batch stays alive) while a call on it runs. */
+VERVE_API void VERVE_CALL verve_batch_destroy(verve_batch* batch);
+/* A batch is used by one thread at a time, like an agent (an overlapping call is refused). */
 VERVE_API verve_result VERVE_CALL verve_batch_get_worker_count(const verve_batch* batch, uint32_t* out_count);
 /* One step of n agents (any shapes, separate agents or bodies), exactly as n verve_agent_update
  * calls in array order would do it, on any number of threads. Agent i reads rewards[i] and its
@@ -329,8 +337,10 @@ VERVE_API verve_result VERVE_CALL verve_batch_get_worker_count(const verve_batch
  * else right after agent i-1's values (agents packed back to back). discrete_total and
  * continuous_total are the arrays' lengths. Everything is checked first: on any bad input nothing
  * changes, out_results (optional, n entries) gets each agent's verdict and the call returns the
- * first agent's error. An update failing later (out of memory) leaves that agent unchanged, the
- * others updated, and is reported the same way. */
+ * first agent's error. A refusal of the whole call (NULL arrays, a bad dt, a handle in use, the
+ * pool's threads failing to start) writes the call's result into every out_results entry. An
+ * update failing later (out of memory) leaves that agent unchanged, the others updated, and is
+ * reported the same way. No failure, a thread that cannot start included, takes the host down. */
 VERVE_API verve_result VERVE_CALL verve_batch_update(verve_batch* batch, verve_agent* const* agents, uint32_t n,
     const float* rewards,
     const int32_t* discrete, const uint32_t* discrete_offsets, uint32_t discrete_total,

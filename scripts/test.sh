@@ -28,7 +28,7 @@ echo "== the web build: JS API (Node.js) and the cart-pole page (headless Chromi
 echo "== the commands README.md and docs/ give (scripts/check_docs.sh, about 1 minute)"
 ./scripts/check_docs.sh
 
-echo "== fuzz targets, 30 s each (docs/fuzzing.md; ./scripts/fuzz.sh 3600 for a real campaign)"
+echo "== fuzz targets, 30 s each (docs/fuzzing.md; ./scripts/fuzz_campaign.sh for a real campaign)"
 ./scripts/fuzz.sh 30
 
 echo "== Windows x64: verve.dll cross-built with MinGW-w64, the C ABI suites run under Wine"

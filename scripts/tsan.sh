@@ -1,8 +1,9 @@
 #!/usr/bin/env bash
 # Builds libverve and the suites where threads meet (hardening stress tests and hooks, C ABI, core,
 # io) with ThreadSanitizer (the tsan preset, into build/tsan) and runs them: any data race fails the
-# run. Left out: the single-threaded learning and scene suites, the allocation-failure sweep and the
-# kill-mid-save tests (no threads meet there; ASan runs them). Measured on 2 shared cores: ~6 min to
+# run. Left out: the single-threaded learning and scene suites, the single-threaded allocation-failure
+# sweeps (AllocationFailure.*; the batch sweep, whose workers meet, runs) and the kill-mid-save tests
+# (no threads meet there; ASan runs them). Measured on 2 shared cores: ~6 min to
 # build from scratch, ~20 s to run. CI runs it after sanitize.sh; each suite has a 10-minute timeout.
 set -euo pipefail
 cd "$(dirname "$0")/.."

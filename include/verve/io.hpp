@@ -21,6 +21,11 @@ struct SaveOptions {
 };
 
 void saveAgent(const Agent& agent, const std::string& path, const SaveOptions& options = {});
+// Writes bytes a *ToString save made to `path`, crash-safely as saveAgent does (a temporary file
+// next to it, flushed, renamed over it, the folder flushed; the old file's permissions kept). The
+// C ABI serialises under the agent's in-use flag and writes with this after giving the flag back,
+// so a slow disk never holds up the agent's (or a brain's bodies') updates. Throws Error(Io).
+void writeSaveFile(const std::string& path, const std::string& bytes);
 std::string saveAgentToString(const Agent& agent, const SaveOptions& options = {});
 
 // Throw Error(Io) when the file cannot be read, Error(Format) naming what is wrong for a corrupt

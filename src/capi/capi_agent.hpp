@@ -9,6 +9,7 @@
 
 #include "capi/capi_buffer.hpp"
 #include "capi/capi_guard.hpp"
+#include "capi/capi_in_use.hpp"
 #include "verve/agent.hpp"
 #include "verve/io.hpp"
 
@@ -38,10 +39,10 @@ struct verve_agent {
 
     // Set for the duration of every call on this agent. Mutable: read-only calls take it too,
     // because they share the agent's scratch memory (one atomic exchange per call).
-    mutable std::atomic<bool> inUse{false};
+    mutable verve::capi::InUseFlag inUse{false};
     // A body's brain: the flag its brain and all the brain's bodies share, since they share weights
     // (one brain and its bodies count as one agent). Null for an agent of its own.
-    std::shared_ptr<std::atomic<bool>> brainInUse;
+    std::shared_ptr<verve::capi::InUseFlag> brainInUse;
 
 private:
     verve::Agent agent_;
@@ -56,31 +57,16 @@ private:
 
 namespace verve::capi {
 
-// Takes the in-use flag of a handle, or throws Error(InvalidState) when another call holds it.
-bool tryAcquire(const verve_agent& handle) noexcept;
-bool tryAcquire(std::atomic<bool>& flag) noexcept;
-[[noreturn]] void refuseInUse();
-
-// One call's exclusive use of an agent: a second thread arriving while it lasts is refused with
-// VERVE_ERROR_INVALID_STATE, never let in (docs/c-api.md "Failure model"). Handle is verve_agent or
-// const verve_agent; agent() is const for the read-only calls.
+// One call's exclusive use of an agent (and of its brain, for a body): capi_in_use.hpp. Handle is
+// verve_agent or const verve_agent; agent() is const for the read-only calls.
 template <typename Handle>
 class AgentUse {
 public:
     explicit AgentUse(Handle* handle) : handle_(handle) {
         requireArg(handle, "agent");
-        if (!tryAcquire(*handle)) refuseInUse();
-        if (handle->brainInUse != nullptr && !tryAcquire(*handle->brainInUse)) {
-            handle->inUse.store(false, std::memory_order_release);
-            refuseInUse();
-        }
+        use_.take(handle->inUse);
+        if (handle->brainInUse != nullptr) use_.takeShared(*handle->brainInUse);
     }
-    ~AgentUse() {
-        if (handle_->brainInUse != nullptr) handle_->brainInUse->store(false, std::memory_order_release);
-        handle_->inUse.store(false, std::memory_order_release);
-    }
-    AgentUse(const AgentUse&) = delete;
-    AgentUse& operator=(const AgentUse&) = delete;
 
     // The agent, const for the read-only calls; a change goes through mutableAgent (save cache).
     auto& agent() const {
@@ -90,6 +76,7 @@ public:
 
 private:
     Handle* handle_;
+    InUse use_;
 };
 
 // Hands a new agent to the host: *out is written only once everything has succeeded.

@@ -32,7 +32,7 @@ VERVE_API verve_result VERVE_CALL verve_agent_create(const verve_agent_desc* des
 VERVE_API void VERVE_CALL verve_agent_destroy(verve_agent* agent) {
     if (agent == nullptr) return;
     // Freeing an agent another thread is inside would crash that thread: it stays alive instead.
-    if (!verve::capi::tryAcquire(*agent)) {
+    if (!verve::capi::tryAcquire(agent->inUse)) {
         verve::capi::recordError(__func__, VERVE_ERROR_INVALID_STATE, "the agent is in use by another call: not destroyed");
         return;
     }

@@ -5,15 +5,18 @@
 #include <vector>
 
 #include "capi/capi_agent.hpp"
+#include "capi/capi_in_use.hpp"
 #include "verve/batch.hpp"
 
 struct verve_batch {
     explicit verve_batch(const verve::BatchOptions& options) : batch(options) {}
     verve::Batch batch;
+    // Held by every call on the batch: verve_batch_destroy refuses while one runs.
+    verve::capi::InUseFlag inUse{false};
     // Scratch reused from call to call: the agents behind the handles, the per-agent verdicts.
     std::vector<verve::Agent*> agents;
-    std::vector<verve_agent*> held;  // the handles whose in-use flag this call holds
-    std::vector<std::atomic<bool>*> heldBrains;  // and the flags of their bodies' brains
+    std::vector<verve::capi::InUseFlag*> held;        // the in-use flags this call holds: its agents'
+    std::vector<verve::capi::InUseFlag*> heldBrains;  // and their brains' (capi_in_use.hpp)
     std::vector<int> results;
 };
 
@@ -62,12 +65,21 @@ VERVE_API verve_result VERVE_CALL verve_batch_create(const verve_batch_desc* des
     });
 }
 
-VERVE_API void VERVE_CALL verve_batch_destroy(verve_batch* batch) { delete batch; }
+VERVE_API void VERVE_CALL verve_batch_destroy(verve_batch* batch) {
+    if (batch == nullptr) return;
+    // Freeing a batch a call is inside (its workers running) would crash that call: it stays alive.
+    if (!verve::capi::tryAcquire(batch->inUse)) {
+        verve::capi::recordError(__func__, VERVE_ERROR_INVALID_STATE, "the batch is in use by another call: not destroyed");
+        return;
+    }
+    delete batch;
+}
 
 VERVE_API verve_result VERVE_CALL verve_batch_get_worker_count(const verve_batch* batch, uint32_t* out_count) {
     return guarded(__func__, [&] {
         requireArg(batch, "batch");
         requireArg(out_count, "out_count");
+        // Read-only and fixed at creation: no in-use flag needed.
         *out_count = batch->batch.workerCount();
     });
 }
@@ -78,46 +90,30 @@ VERVE_API verve_result VERVE_CALL verve_batch_update(verve_batch* batch, verve_a
                                                      const float* continuous, const uint32_t* continuous_offsets,
                                                      uint32_t continuous_total, float dt, uint32_t* out_actions,
                                                      verve_result* out_results) {
-    return guarded(__func__, [&] {
+    bool verdicts = false;  // out_results holds each agent's verdict from verve::Batch
+    const verve_result result = guarded(__func__, [&] {
         requireArg(batch, "batch");
         if (n == 0) return;
         requireArg(agents, "agents");
         requireArg(rewards, "rewards");
         requireArg(out_actions, "out_actions");
-        batch->agents.resize(n);
-        batch->results.assign(n, 0);
-        // Room first: a flag once taken is always recorded, so it is always given back.
+        // The batch's own flag first (its scratch is used by one call at a time); then room (InUse
+        // records every flag it takes within this capacity) for each agent's and each body's
+        // brain's, held for the whole call as a single call holds them; an agent or brain listed
+        // twice is taken once.
+        verve::capi::InUse batchUse;
+        batchUse.take(batch->inUse);
         batch->held.reserve(n);
         batch->heldBrains.reserve(n);
-        // Every agent's in-use flag, and the flag of each body's brain, is held for the whole call,
-        // as a single call holds them; an agent or brain listed twice is taken once (looked up
-        // only when its flag is already held).
-        struct Release {
-            std::vector<verve_agent*>& held;
-            std::vector<std::atomic<bool>*>& heldBrains;
-            ~Release() {
-                for (verve_agent* h : held) h->inUse.store(false, std::memory_order_release);
-                for (std::atomic<bool>* b : heldBrains) b->store(false, std::memory_order_release);
-                held.clear();
-                heldBrains.clear();
-            }
-        } release{batch->held, batch->heldBrains};
+        verve::capi::InUse use(batch->held, batch->heldBrains);
+        batch->agents.resize(n);
+        batch->results.assign(n, 0);
         for (uint32_t i = 0; i < n; ++i) {
             verve_agent* h = agents[i];
             batch->agents[i] = nullptr;
             if (h == nullptr) continue;  // refused below, naming the agent
-            if (verve::capi::tryAcquire(*h)) {
-                batch->held.push_back(h);
-            } else if (std::find(agents, agents + i, h) == agents + i) {
-                verve::capi::refuseInUse();
-            }
-            if (std::atomic<bool>* brain = h->brainInUse.get()) {
-                if (verve::capi::tryAcquire(*brain)) {
-                    batch->heldBrains.push_back(brain);
-                } else if (std::find(batch->heldBrains.begin(), batch->heldBrains.end(), brain) == batch->heldBrains.end()) {
-                    verve::capi::refuseInUse();
-                }
-            }
+            use.take(h->inUse);
+            if (h->brainInUse != nullptr) use.takeShared(*h->brainInUse);
             // Through mutableAgent: an update drops the saves that verve_agent_save_memory keeps.
             batch->agents[i] = &h->mutableAgent();
         }
@@ -137,11 +133,13 @@ VERVE_API verve_result VERVE_CALL verve_batch_update(verve_batch* batch, verve_a
         try {
             batch->batch.update(step);
         } catch (...) {
+            // verve::Batch wrote every agent's verdict, a refusal of the whole call included.
             if (out_results != nullptr) {
                 for (uint32_t i = 0; i < n; ++i) {
                     const int code = batch->results[i];
                     out_results[i] = code == 0 ? VERVE_OK : verve::capi::toResult(static_cast<verve::ErrorCode>(code));
                 }
+                verdicts = true;
             }
             throw;
         }
@@ -149,6 +147,12 @@ VERVE_API verve_result VERVE_CALL verve_batch_update(verve_batch* batch, verve_a
             for (uint32_t i = 0; i < n; ++i) out_results[i] = VERVE_OK;
         }
     });
+    // Refused before verve::Batch saw the call (NULL arrays, a handle in use by another call):
+    // no agent was updated, and every verdict says why (never VERVE_OK, never stale).
+    if (result != VERVE_OK && !verdicts && out_results != nullptr) {
+        for (uint32_t i = 0; i < n; ++i) out_results[i] = result;
+    }
+    return result;
 }
 
 }  // extern "C"

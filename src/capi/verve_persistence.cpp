@@ -1,5 +1,7 @@
 // Saving and loading agents, XML or binary: files (atomic) and memory buffers (two-call size
 // pattern). Loading tells the formats apart by their first bytes.
+#include <string>
+
 #include "capi/capi_agent.hpp"
 #include "verve/io.hpp"
 
@@ -15,11 +17,16 @@ verve::SaveOptions inFormat(verve::SaveFormat format) {
     return options;
 }
 
+// Serialised under the in-use flag, written after it is given back: the disk (write, flush,
+// rename) never holds up the agent's next update, nor, for a body, its brain's other bodies.
 void saveToFile(const verve_agent* agent, const char* path, verve::SaveFormat format) {
-    const AgentUse use(agent);
-    const verve::Agent& a = use.agent();
-    requireArg(path, "path");
-    verve::saveAgent(a, path, inFormat(format));
+    std::string bytes;
+    {
+        const AgentUse use(agent);
+        requireArg(path, "path");
+        bytes = verve::saveAgentToString(use.agent(), inFormat(format));
+    }
+    verve::writeSaveFile(path, bytes);
 }
 
 // The two-call buffer save of either format.

@@ -63,8 +63,8 @@ struct Agent::Impl {
     static constexpr unsigned kPrefetchStages = 2 + core::StateRepresentation::kPrefetchStages;
     void prefetch(unsigned stage) const noexcept;
     // The same for a batch's check of every agent before its updates (batch.cpp), which reads the
-    // descriptor and writes the brain's batch token: stage 0 asks for the members that lead to the
-    // brain, stage 1 for the brain's lines up to the descriptor.
+    // descriptor: stage 0 asks for the members that lead to the brain, stage 1 for the brain's
+    // lines up to the descriptor.
     void prefetchCheck(unsigned stage) const noexcept;
     // And from inside the update before it (core::PrefetchQueue): the arrays an update reads
     // through, in the order it reads them (centres, weights, live list, traces); with

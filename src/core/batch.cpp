@@ -6,6 +6,7 @@
 #include <mutex>
 #include <new>
 #include <string>
+#include <system_error>
 #include <thread>
 #include <vector>
 
@@ -17,10 +18,46 @@
 namespace verve {
 namespace {
 
-// Each call marks the brains it meets with a token no other call uses (BrainState::batchToken).
-std::atomic<std::uint64_t> lastToken{0};
-
 [[noreturn]] void refuse(const std::string& message) { throw Error(ErrorCode::InvalidArgument, message); }
+
+// Which group of the current call each brain is in: an open-addressing table of the call's own
+// (kept in the Batch for its memory, used by one call at a time), so that nothing is written into
+// the brains a call reads. Two concurrent calls that share a brain (a misuse of the C++ API, which
+// the C ABI refuses) can race on the brain's weights, but never on the grouping.
+class BrainGroups {
+public:
+    // Empties the table, with room for `agents` brains at most.
+    void reset(std::size_t agents) {
+        std::size_t size = 16;
+        while (size < 2 * agents) size *= 2;
+        slots_.assign(size, Slot{});
+        last_ = nullptr;
+        groups_ = 0;
+    }
+    // The group of `brain`, a new one the first time the call meets it.
+    std::uint32_t of(const BrainState* brain) {
+        if (brain == last_) return lastGroup_;  // a crowd's bodies usually come together
+        const std::size_t mask = slots_.size() - 1;
+        const std::uint64_t key = static_cast<std::uint64_t>(reinterpret_cast<std::uintptr_t>(brain) >> 4);
+        std::size_t at = static_cast<std::size_t>((key * 0x9E3779B97F4A7C15ull) >> 32) & mask;
+        while (slots_[at].brain != nullptr && slots_[at].brain != brain) at = (at + 1) & mask;
+        if (slots_[at].brain == nullptr) slots_[at] = Slot{brain, groups_++};
+        last_ = brain;
+        lastGroup_ = slots_[at].group;
+        return lastGroup_;
+    }
+    std::uint32_t count() const { return groups_; }
+
+private:
+    struct Slot {
+        const BrainState* brain = nullptr;
+        std::uint32_t group = 0;
+    };
+    std::vector<Slot> slots_;
+    const BrainState* last_ = nullptr;
+    std::uint32_t lastGroup_ = 0;
+    std::uint32_t groups_ = 0;
+};
 
 // The failure of the lowest-numbered agent, whichever worker saw it first.
 struct FirstFailure {
@@ -62,6 +99,7 @@ struct Batch::Impl {
     std::vector<std::uint32_t> groupStart;  // per group: first entry in `order`, plus an end
     std::vector<std::uint32_t> order;       // agent indices grouped, each group in array order
     std::vector<ObservationView> views;    // per agent, into the packed arrays
+    BrainGroups brainGroups;
     FirstFailure failure;
 };
 
@@ -146,25 +184,63 @@ void Batch::Impl::runOverGroups() {
         }
         return;
     }
-    if (!pool) pool = std::make_unique<core::WorkerPool>(options.workerCount);
     pool->run(task, groups, minRange, this);
 }
+
+namespace {
+
+// A refusal of the whole call (before any agent's own check) is every agent's verdict: none of
+// them was updated, so none may read as fine (issue 32).
+template <typename Body>
+void refusingAll(const BatchStep& s, Body&& body) {
+    try {
+        body();
+    } catch (...) {
+        int code = static_cast<int>(ErrorCode::Internal);
+        try {
+            throw;
+        } catch (const Error& e) {
+            code = static_cast<int>(e.code());
+        } catch (const std::bad_alloc&) {
+            code = static_cast<int>(ErrorCode::OutOfMemory);
+        } catch (...) {
+        }
+        if (s.results != nullptr) {
+            for (std::size_t i = 0; i < s.count; ++i) s.results[i] = code;
+        }
+        throw;
+    }
+}
+
+}  // namespace
 
 void Batch::update(const BatchStep& s) {
     Impl& b = *impl_;
     if (s.count == 0) return;
-    if (s.count > UINT32_MAX - 1) refuse("count " + std::to_string(s.count) + " is too large");
-    if (s.agents == nullptr || s.rewards == nullptr || s.actions == nullptr) {
-        refuse("agents, rewards and actions must not be NULL");
-    }
-    core::checkTimeStep(s.dt);
+    refusingAll(s, [&] {
+        if (s.count > UINT32_MAX - 1) refuse("count " + std::to_string(s.count) + " is too large");
+        if (s.agents == nullptr || s.rewards == nullptr || s.actions == nullptr) {
+            refuse("agents, rewards and actions must not be NULL");
+        }
+        core::checkTimeStep(s.dt);
+        // The scratch, and the pool's threads on the first call: a failure to start them (out of
+        // memory, the system's thread limit) refuses the call before anything changed.
+        b.groupOf.resize(s.count);
+        b.views.resize(s.count);
+        b.order.resize(s.count);
+        b.groupStart.reserve(s.count + 1);  // the sort below allocates nothing
+        b.brainGroups.reset(s.count);
+        if (b.options.scheduler.enqueueTask == nullptr && !b.pool) {
+            try {
+                b.pool = std::make_unique<core::WorkerPool>(b.options.workerCount);
+            } catch (const std::system_error& e) {
+                throw Error(ErrorCode::OutOfMemory, std::string("cannot start the batch's worker threads: ") + e.what());
+            }
+        }
+    });
 
     // Check every agent's input and find its group (its brain) before anything changes.
-    const std::uint64_t token = ++lastToken;
-    b.groupOf.resize(s.count);
-    b.views.resize(s.count);
     b.failure.index = SIZE_MAX;
-    std::uint32_t groups = 0;
     std::size_t packedDiscrete = 0, packedContinuous = 0;
     // The check reads little of each agent, so its links are asked for further ahead than the
     // update's: an agent's members 16 agents ahead, its brain 8 ahead.
@@ -194,12 +270,7 @@ void Batch::update(const BatchStep& s) {
             b.views[i] = ObservationView{nd > 0 ? s.discrete + d : nullptr, nd, nc > 0 ? s.continuous + c : nullptr, nc};
             core::checkObservation(a.desc, b.views[i]);
             core::checkFinite(s.rewards[i], "reward");
-            BrainState& brain = *a.brain;
-            if (brain.batchToken != token) {
-                brain.batchToken = token;
-                brain.batchGroup = groups++;
-            }
-            b.groupOf[i] = brain.batchGroup;
+            b.groupOf[i] = b.brainGroups.of(a.brain.get());
         } catch (const Error& e) {
             code = static_cast<int>(e.code());
             b.failure.record(i, e.code(), e.what());
@@ -209,10 +280,10 @@ void Batch::update(const BatchStep& s) {
     b.failure.rethrow();
 
     // Counting sort: each group's agents together, in array order.
+    const std::uint32_t groups = b.brainGroups.count();
     b.groupStart.assign(std::size_t(groups) + 1, 0);
     for (std::size_t i = 0; i < s.count; ++i) ++b.groupStart[b.groupOf[i] + 1];
     for (std::uint32_t g = 0; g < groups; ++g) b.groupStart[g + 1] += b.groupStart[g];
-    b.order.resize(s.count);
     for (std::size_t i = 0; i < s.count; ++i) b.order[b.groupStart[b.groupOf[i]]++] = static_cast<std::uint32_t>(i);
     for (std::uint32_t g = groups; g > 0; --g) b.groupStart[g] = b.groupStart[g - 1];
     b.groupStart[0] = 0;

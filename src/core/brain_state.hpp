@@ -17,11 +17,9 @@ struct BrainState {
 
     // What every update reads comes first, the representation (whose tail is cold) last, so that
     // an update of a crowd's agent touches as few of this struct's cache lines as it can. A batch
-    // reads every agent's brain once before it updates any: the scratch it writes comes right
-    // before the descriptor's sensor lists, which its check reads.
-    // Scratch of a batch update (batch.cpp): which group of the current call this brain is in.
-    std::uint64_t batchToken = 0;
-    std::uint32_t batchGroup = 0;
+    // reads every agent's brain once before it updates any (the descriptor's sensor lists, for its
+    // check); it writes nothing here: its grouping by brain is its own (batch.cpp), so two batches
+    // that meet one brain cannot corrupt each other's.
     AgentDescriptor desc;
     core::WeightTable weights;
     // The real rewards every body has learned from: they bound the values TD errors bootstrap from.

@@ -5,16 +5,27 @@
 namespace verve::core {
 
 WorkerPool::WorkerPool(std::uint32_t threads) {
-    for (std::uint32_t w = 1; w < threads; ++w) threads_.emplace_back([this, w] { loop(w); });
+    try {
+        threads_.reserve(threads > 1 ? threads - 1 : 0);
+        for (std::uint32_t w = 1; w < threads; ++w) threads_.emplace_back([this, w] { loop(w); });
+    } catch (...) {
+        // A running std::thread destroyed unjoined would call std::terminate: join them first.
+        stop();
+        throw;
+    }
 }
 
-WorkerPool::~WorkerPool() {
+WorkerPool::~WorkerPool() { stop(); }
+
+void WorkerPool::stop() noexcept {
     {
         std::lock_guard<std::mutex> lock(mutex_);
         stopping_ = true;
     }
     wake_.notify_all();
-    for (auto& t : threads_) t.join();
+    for (auto& t : threads_) {
+        if (t.joinable()) t.join();
+    }
 }
 
 void WorkerPool::work(std::uint32_t worker) {
@@ -30,16 +41,19 @@ void WorkerPool::loop(std::uint32_t worker) {
     for (;;) {
         {
             std::unique_lock<std::mutex> lock(mutex_);
-            wake_.wait(lock, [&] { return stopping_ || generation_ != seen; });
+            // A run that closed before this thread woke is not joined: it is done without it.
+            wake_.wait(lock, [&] { return stopping_ || (open_ && generation_ != seen); });
             if (stopping_) return;
             seen = generation_;
+            ++busy_;
         }
         work(worker);
+        bool last = false;
         {
             std::lock_guard<std::mutex> lock(mutex_);
-            --busy_;
+            last = --busy_ == 0 && !open_;
         }
-        idle_.notify_one();
+        if (last) idle_.notify_one();
     }
 }
 
@@ -59,13 +73,18 @@ void WorkerPool::run(TaskFunction task, std::uint32_t count, std::uint32_t minRa
         count_ = count;
         chunk_ = chunk;
         next_.store(0);
-        busy_ = static_cast<std::uint32_t>(threads_.size());
+        open_ = true;
         ++generation_;
     }
-    wake_.notify_all();
+    // Wake only as many threads as there are ranges for besides the caller's first.
+    const std::uint32_t ranges = (count + chunk - 1) / chunk;
+    const std::uint32_t helpers = std::min<std::uint32_t>(static_cast<std::uint32_t>(threads_.size()), ranges - 1);
+    for (std::uint32_t h = 0; h < helpers; ++h) wake_.notify_one();
     work(0);
-    // Every thread must have left this run before the next one resets the shared fields.
+    // Every range is taken: close the run, then wait for the threads inside it to finish theirs
+    // (they read the shared fields, which the next run resets).
     std::unique_lock<std::mutex> lock(mutex_);
+    open_ = false;
     idle_.wait(lock, [&] { return busy_ == 0; });
 }
 

@@ -47,10 +47,14 @@ std::string encode(const AgentSnapshot& snapshot, const SaveOptions& options) {
 SaveOptions brainOptions(SaveFormat format) { return SaveOptions{false, format}; }
 
 void save(const AgentSnapshot& snapshot, const std::string& path, const SaveOptions& options) {
-    naming("save '" + path + "'", [&] { io::writeFileAtomically(path, encode(snapshot, options)); });
+    writeSaveFile(path, encode(snapshot, options));
 }
 
 }  // namespace
+
+void writeSaveFile(const std::string& path, const std::string& bytes) {
+    naming("save '" + path + "'", [&] { io::writeFileAtomically(path, bytes); });
+}
 
 std::string saveAgentToString(const Agent& agent, const SaveOptions& options) {
     return naming("save", [&] { return encode(agent.snapshot(), options); });

@@ -11,9 +11,10 @@ namespace {
 
 // A file name may have at most 255 bytes (ext4, NTFS in UTF-16 units, most others).
 constexpr std::size_t kMaxNameBytes = 255;
-// The temporary name's tail after the target's head: ".tmp-" + 8 hex digits + "-" + pid (up to
-// 20 digits) + "-" + counter (up to 20 digits).
-constexpr std::size_t kMaxTempTail = 5 + 8 + 1 + 20 + 1 + 20;
+// The temporary name's tail after the target's head: ".tmp-" + 8 hex digits (the name's hash) +
+// "-" + 8 hex digits (the place, platform::placeTag) + "-" + pid (up to 20 digits) + "-" +
+// counter (up to 20 digits).
+constexpr std::size_t kMaxTempTail = 5 + 8 + 1 + 8 + 1 + 20 + 1 + 20;
 
 std::uint32_t fnv1a(const std::string& text) {
     std::uint32_t hash = 2166136261u;
@@ -35,6 +36,8 @@ std::string temporaryPrefix(const std::string& name) {
 
 // Removes the temporary files that saves of this target left when their process was killed. A
 // file whose owner (the pid in its name) still runs is left alone: it may be a save in progress.
+// So is one from another place (machine or PID namespace, platform::placeTag), whose pid means
+// nothing here: `prefix` ends with this place's tag.
 void removeStaleTemporaries(const std::string& directory, const std::string& prefix) {
     const std::uint64_t self = platform::currentProcessId();
     for (const std::string& name : platform::listDirectory(directory)) {
@@ -55,15 +58,15 @@ void writeFileAtomically(const std::string& path, const std::string& data) {
     if (path.empty()) throw Error(ErrorCode::InvalidArgument, "the path is empty");
     const std::string target = platform::followLinks(path);
     const platform::PathParts parts = platform::splitPath(target);
-    const std::string prefix = temporaryPrefix(parts.name);
+    const std::string prefix = temporaryPrefix(parts.name) + platform::placeTag() + "-";
     removeStaleTemporaries(parts.directory, prefix);
 
-    static std::atomic<std::uint64_t> counter{0};  // with the pid: no other saver picks the same name
+    static std::atomic<std::uint64_t> counter{0};  // with the place and pid: no other saver picks the same name
     const std::string ours = prefix + std::to_string(platform::currentProcessId()) + "-";
     std::string temp;
     for (int attempt = 0;; ++attempt) {
         temp = platform::joinPath(parts.directory, ours + std::to_string(counter.fetch_add(1)));
-        if (platform::writeNewFile(temp, data)) break;
+        if (platform::writeNewFile(temp, data, target)) break;
         if (attempt == 100) throw Error(ErrorCode::Io, "cannot create a temporary file next to '" + target + "'");
     }
     try {

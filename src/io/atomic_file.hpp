@@ -12,7 +12,9 @@ constexpr std::uint64_t kMaxSaveFileBytes = std::uint64_t{1} << 30;
 // Writes `data` to a new temporary file next to the target, flushes it to disk, and replaces
 // `path` with it in one atomic step. A crash at any moment leaves either the old file or the new
 // one at `path`, never a mix. A symbolic link at `path` is followed: the file it points to is
-// replaced. Temporary files left by killed saves of the same target are removed. On error the
+// replaced, keeping its permissions and owner (POSIX; Windows: attributes and ACL). Temporary
+// files left by killed saves of the same target from this machine and PID namespace are
+// removed (the temporary name carries that place, platform::placeTag). On error the
 // temporary file is removed and the old file is untouched; throws Error(Io) naming the path and
 // the system's reason.
 void writeFileAtomically(const std::string& path, const std::string& data);

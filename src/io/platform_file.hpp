@@ -26,9 +26,16 @@ std::string followLinks(const std::string& path);
 
 // Creates `path` (never an existing file), writes `data`, flushes it to the disk and closes it.
 // Returns false, changing nothing, when the name is taken; on other failures removes the new file.
-bool writeNewFile(const std::string& path, const std::string& data);
+// POSIX: when `replacing` exists, the new file takes its permission bits and owner (a private
+// save stays private); if the owner cannot be given (not root), group and others lose access.
+// Windows: replaceFile keeps the replaced file's attributes and ACL instead.
+bool writeNewFile(const std::string& path, const std::string& data, const std::string& replacing);
 
-// Replaces `to` by `from` in one atomic step and makes that durable.
+// Replaces `to` by `from` in one atomic step and makes that durable: POSIX renames, then flushes
+// the folder (a folder that cannot be flushed for another reason than the file system's not
+// supporting it is Error(Io), the new file in place); Windows uses ReplaceFileW (MoveFileExW with
+// MOVEFILE_WRITE_THROUGH for a new target), retried for a while on a sharing violation (a
+// reader, an antivirus or an indexer holding the file).
 void replaceFile(const std::string& from, const std::string& to);
 
 void removeFile(const std::string& path) noexcept;
@@ -37,8 +44,14 @@ void removeFile(const std::string& path) noexcept;
 std::vector<std::string> listDirectory(const std::string& directory);
 
 std::uint64_t currentProcessId();
-// True unless the process is known to be gone (a temporary file it owned is then stale).
+// True unless the process is known to be gone (a temporary file it owned is then stale). Only
+// meaningful for a pid of this place (placeTag).
 bool processIsRunning(std::uint64_t pid);
+// Eight hex digits naming where process ids mean what they mean here: the machine (its host
+// name) and, on Linux, the PID namespace (a container). Temporary files carry it, and a save
+// removes only the stale ones of its own place: another machine's or container's pids cannot be
+// checked from here.
+std::string placeTag();
 
 // Reads a whole regular file. Devices, FIFOs and directories are refused without blocking or
 // reading from them, and so is a file of more than maxBytes.

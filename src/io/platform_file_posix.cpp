@@ -8,6 +8,7 @@
 #include <unistd.h>
 
 #include <cerrno>
+#include <cstdio>
 #include <cstring>
 
 #include "verve/error.hpp"
@@ -50,10 +51,30 @@ void writeAll(int fd, const std::string& data, const std::string& path) {
     }
 }
 
-// Makes a rename durable. Some file systems refuse fsync on a directory: not an error.
+// Makes a rename durable. A file system that does not support fsync on a directory (EINVAL,
+// ENOTSUP) and a folder that cannot be opened for reading (write and search permission only) are
+// not errors: there is nothing more to do. Any other failure is (the disk may not have it).
 void syncDirectory(const std::string& directory) {
-    const Descriptor fd(::open(directory.empty() ? "." : directory.c_str(), O_RDONLY | O_DIRECTORY | O_CLOEXEC));
-    if (fd.get() >= 0) ::fsync(fd.get());
+    const std::string name = directory.empty() ? "." : directory;
+    const Descriptor fd(::open(name.c_str(), O_RDONLY | O_DIRECTORY | O_CLOEXEC));
+    if (fd.get() < 0) return;
+    if (::fsync(fd.get()) == 0) return;
+    const int error = errno;
+    if (error == EINVAL || error == ENOTSUP || error == EOPNOTSUPP || error == EROFS) return;
+    fail("the save is in place, but cannot flush its folder", name, error);
+}
+
+// The replaced file's permission bits and owner, so a save over a private file stays private.
+void takeModeAndOwner(int fd, const std::string& replacing, const std::string& path) {
+    struct stat old;
+    if (replacing.empty() || ::stat(replacing.c_str(), &old) != 0 || !S_ISREG(old.st_mode)) return;
+    struct stat now;
+    if (::fstat(fd, &now) != 0) fail("cannot read", path, errno);
+    mode_t mode = old.st_mode & 0777;  // not set-id or sticky bits: a save is data
+    if ((now.st_uid != old.st_uid || now.st_gid != old.st_gid) && ::fchown(fd, old.st_uid, old.st_gid) != 0) {
+        mode &= 0700;  // owned by someone else now: no one but the owner may read it
+    }
+    if (::fchmod(fd, mode) != 0) fail("cannot set the permissions of", path, errno);
 }
 
 }  // namespace
@@ -75,13 +96,16 @@ std::string followLinks(const std::string& path) {
     fail("cannot follow the links of", path, ELOOP);
 }
 
-bool writeNewFile(const std::string& path, const std::string& data) {
+bool writeNewFile(const std::string& path, const std::string& data, const std::string& replacing) {
+    // A new target gets the umask's permissions, as any file the game makes; a replaced one's are
+    // taken before a byte is written, so the data is never more exposed than the old file was.
     Descriptor fd(::open(path.c_str(), O_WRONLY | O_CREAT | O_EXCL | O_CLOEXEC, 0666));
     if (fd.get() < 0) {
         if (errno == EEXIST) return false;
         fail("cannot create", path, errno);
     }
     try {
+        takeModeAndOwner(fd.get(), replacing, path);
         writeAll(fd.get(), data, path);
         if (::fsync(fd.get()) != 0) fail("cannot flush", path, errno);
         if (fd.close() != 0) fail("cannot close", path, errno);
@@ -110,6 +134,21 @@ std::vector<std::string> listDirectory(const std::string& directory) {
 }
 
 std::uint64_t currentProcessId() { return static_cast<std::uint64_t>(::getpid()); }
+
+// Not cached: a process may move to another PID namespace (unshare, then fork) after a save.
+std::string placeTag() {
+    std::string place;
+    char host[256] = {};
+    if (::gethostname(host, sizeof host - 1) == 0) place = host;
+    char ns[64] = {};
+    const ssize_t n = ::readlink("/proc/self/ns/pid", ns, sizeof ns - 1);  // Linux: "pid:[4026531836]"
+    if (n > 0) place += std::string("/") + std::string(ns, static_cast<std::size_t>(n));
+    std::uint32_t hash = 2166136261u;
+    for (const unsigned char c : place) hash = (hash ^ c) * 16777619u;
+    char hex[9];
+    std::snprintf(hex, sizeof hex, "%08x", static_cast<unsigned>(hash));
+    return std::string(hex);
+}
 
 bool processIsRunning(std::uint64_t pid) {
     if (pid == 0 || pid > static_cast<std::uint64_t>(INT32_MAX)) return true;  // not a pid: leave it alone

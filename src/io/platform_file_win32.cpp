@@ -1,5 +1,6 @@
 // The file seam on Windows: UTF-8 paths become UTF-16 for the wide API; a save is a new file,
-// FlushFileBuffers, then MoveFileExW(REPLACE_EXISTING | WRITE_THROUGH) over the target.
+// FlushFileBuffers, then ReplaceFileW over the target (which keeps its attributes and ACL), or
+// MoveFileExW(WRITE_THROUGH) for a new one; both retried for a while on sharing violations.
 #include "io/platform_file.hpp"
 
 #ifndef WIN32_LEAN_AND_MEAN
@@ -77,7 +78,8 @@ const char* pathSeparators() { return "\\/"; }
 
 std::string followLinks(const std::string& path) { return path; }
 
-bool writeNewFile(const std::string& path, const std::string& data) {
+// `replacing`: ReplaceFileW gives the new file the replaced one's attributes and ACL (replaceFile).
+bool writeNewFile(const std::string& path, const std::string& data, const std::string& /*replacing*/) {
     const std::wstring name = wide(path);
     Handle file(::CreateFileW(name.c_str(), GENERIC_WRITE, 0, nullptr, CREATE_NEW, FILE_ATTRIBUTE_NORMAL, nullptr));
     if (!file.valid()) {
@@ -105,10 +107,36 @@ bool writeNewFile(const std::string& path, const std::string& data) {
     return true;
 }
 
+namespace {
+
+// Another handle on the file (a load without FILE_SHARE_DELETE in another program, an antivirus
+// or an indexer scanning the new save) makes a replace fail for a moment: worth waiting for.
+bool transient(DWORD code) {
+    return code == ERROR_SHARING_VIOLATION || code == ERROR_LOCK_VIOLATION || code == ERROR_ACCESS_DENIED ||
+           code == ERROR_UNABLE_TO_REMOVE_REPLACED || code == ERROR_UNABLE_TO_MOVE_REPLACEMENT;
+}
+
+}  // namespace
+
 void replaceFile(const std::string& from, const std::string& to) {
-    if (!::MoveFileExW(wide(from).c_str(), wide(to).c_str(), MOVEFILE_REPLACE_EXISTING | MOVEFILE_WRITE_THROUGH)) {
-        fail("cannot replace", to, ::GetLastError());
+    const std::wstring source = wide(from), target = wide(to);
+    DWORD code = ERROR_SUCCESS;
+    // About 2 s in all: long enough for a scanner, short enough not to hang a game's save.
+    for (int attempt = 0; attempt < 40; ++attempt) {
+        if (attempt > 0) ::Sleep(attempt < 10 ? 10 : 60);
+        if (::ReplaceFileW(target.c_str(), source.c_str(), nullptr, REPLACEFILE_IGNORE_MERGE_ERRORS, nullptr, nullptr)) {
+            return;
+        }
+        code = ::GetLastError();
+        if (code == ERROR_FILE_NOT_FOUND || code == ERROR_UNABLE_TO_MOVE_REPLACEMENT_2) {
+            // No file to replace (a first save), or it was moved aside and the new one is still
+            // under its temporary name: move the new one into place.
+            if (::MoveFileExW(source.c_str(), target.c_str(), MOVEFILE_REPLACE_EXISTING | MOVEFILE_WRITE_THROUGH)) return;
+            code = ::GetLastError();
+        }
+        if (!transient(code)) break;
     }
+    fail("cannot replace", to, code);
 }
 
 void removeFile(const std::string& path) noexcept {
@@ -132,6 +160,21 @@ std::vector<std::string> listDirectory(const std::string& directory) {
 
 std::uint64_t currentProcessId() { return ::GetCurrentProcessId(); }
 
+std::string placeTag() {
+    static const std::string tag = [] {
+        wchar_t name[256] = {};
+        DWORD size = 255;
+        std::string place = ::GetComputerNameExW(ComputerNameDnsFullyQualified, name, &size) ? narrow(name) : "";
+        std::uint32_t hash = 2166136261u;
+        for (const unsigned char c : place) hash = (hash ^ c) * 16777619u;
+        static const char digits[] = "0123456789abcdef";
+        std::string hex(8, '0');
+        for (int i = 7; i >= 0; --i, hash >>= 4) hex[static_cast<std::size_t>(i)] = digits[hash & 15];
+        return hex;
+    }();
+    return tag;
+}
+
 bool processIsRunning(std::uint64_t pid) {
     if (pid == 0 || pid > 0xFFFFFFFFu) return true;  // not a process id: leave its file alone
     const HANDLE process = ::OpenProcess(PROCESS_QUERY_LIMITED_INFORMATION, FALSE, static_cast<DWORD>(pid));
@@ -143,8 +186,9 @@ bool processIsRunning(std::uint64_t pid) {
 }
 
 std::string readRegularFile(const std::string& path, std::uint64_t maxBytes) {
-    Handle file(::CreateFileW(wide(path).c_str(), GENERIC_READ, FILE_SHARE_READ | FILE_SHARE_WRITE, nullptr,
-                              OPEN_EXISTING, FILE_ATTRIBUTE_NORMAL, nullptr));
+    // FILE_SHARE_DELETE: a save (ReplaceFileW, MoveFileExW) may replace the file while it is read.
+    Handle file(::CreateFileW(wide(path).c_str(), GENERIC_READ, FILE_SHARE_READ | FILE_SHARE_WRITE | FILE_SHARE_DELETE,
+                              nullptr, OPEN_EXISTING, FILE_ATTRIBUTE_NORMAL, nullptr));
     if (!file.valid()) fail("cannot open", path, ::GetLastError());
     if (::GetFileType(file.get()) != FILE_TYPE_DISK) refuseNonRegular(path);
     LARGE_INTEGER size;

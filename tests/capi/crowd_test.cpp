@@ -412,6 +412,98 @@ TEST_F(BatchRefusal, ABatchUpdateDropsTheSaveASizeQueryKept) {
     EXPECT_EQ(bytes, saved(agents_[1]));
 }
 
+// Issue 32: a call refused as a whole leaves no verdict saying VERVE_OK, nor a stale one.
+TEST_F(BatchRefusal, ARefusedCallGivesEveryAgentItsVerdict) {
+    const auto expectAll = [&](verve_result code, const char* what) {
+        for (int i = 0; i < 3; ++i) EXPECT_EQ(results_[i], code) << what << ": agent " << i;
+    };
+    EXPECT_EQ(update(0.0f), VERVE_ERROR_INVALID_ARGUMENT);
+    expectAll(VERVE_ERROR_INVALID_ARGUMENT, "dt 0");
+    EXPECT_EQ(update(std::numeric_limits<float>::quiet_NaN()), VERVE_ERROR_INVALID_ARGUMENT);
+    expectAll(VERVE_ERROR_INVALID_ARGUMENT, "dt NaN");
+    for (auto& r : results_) r = VERVE_OK;  // stale verdicts of an earlier call
+    EXPECT_EQ(verve_batch_update(batch_, agents_, 3, nullptr, discrete_, nullptr, 3, continuous_, nullptr, 3, 0.1f,
+                                 actions_, results_),
+              VERVE_ERROR_INVALID_ARGUMENT);
+    expectAll(VERVE_ERROR_INVALID_ARGUMENT, "rewards NULL");
+    for (auto& r : results_) r = VERVE_OK;
+    EXPECT_EQ(verve_batch_update(batch_, agents_, 3, rewards_, discrete_, nullptr, 3, continuous_, nullptr, 3, 0.1f,
+                                 nullptr, results_),
+              VERVE_ERROR_INVALID_ARGUMENT);
+    expectAll(VERVE_ERROR_INVALID_ARGUMENT, "out_actions NULL");
+    for (auto& r : results_) r = VERVE_OK;
+    EXPECT_EQ(verve_batch_update(nullptr, agents_, 3, rewards_, discrete_, nullptr, 3, continuous_, nullptr, 3, 0.1f,
+                                 actions_, results_),
+              VERVE_ERROR_INVALID_ARGUMENT);
+    expectAll(VERVE_ERROR_INVALID_ARGUMENT, "batch NULL");
+    expectUnchanged();
+}
+
+// A host job system that, while the batch call holds its flags, tries what another thread of
+// the game might: a second batch call over the same agents, destroying the batch, an agent, the brain.
+struct Meddler {
+    verve_batch* other = nullptr;
+    verve_batch* self = nullptr;
+    verve_agent* const* agents = nullptr;
+    verve_brain* brain = nullptr;
+    verve_result otherResult = VERVE_OK;
+    verve_result otherResults[3] = {VERVE_OK, VERVE_OK, VERVE_OK};
+    bool batchSurvived = false, agentSurvived = false;
+};
+
+void* VERVE_CALL enqueueMeddling(verve_task_fn task, uint32_t count, uint32_t, void* taskContext, void* user) {
+    auto* m = static_cast<Meddler*>(user);
+    const float rewards[3] = {0, 0, 0};
+    const float continuous[3] = {0.1f, 0.2f, 0.3f};
+    uint32_t actions[3];
+    m->otherResult = verve_batch_update(m->other, m->agents, 3, rewards, nullptr, nullptr, 0, continuous, nullptr, 3,
+                                        0.1f, actions, m->otherResults);
+    verve_batch_destroy(m->self);  // refused: this call is inside it
+    m->batchSurvived = std::string(verve_last_error()).find("not destroyed") != std::string::npos;
+    verve_agent_destroy(m->agents[0]);
+    m->agentSurvived = std::string(verve_last_error()).find("not destroyed") != std::string::npos;
+    verve_brain_destroy(m->brain);  // allowed: the bodies' calls do not use the brain's handle
+    m->brain = nullptr;
+    task(0, count, 0, taskContext);
+    return nullptr;
+}
+
+TEST(BatchInUse, OverlappingCallsAndDestroysAreRefusedWithVerdicts) {
+    const verve_agent_desc d = shape(0, 1, 10, 2, 3);
+    Meddler m;
+    ASSERT_EQ(verve_brain_create(&d, &m.brain), VERVE_OK);
+    verve_agent* agents[3] = {};
+    for (auto*& a : agents) ASSERT_EQ(verve_brain_create_body(m.brain, &a), VERVE_OK);
+    m.agents = agents;
+    verve_batch_desc bd;
+    verve_batch_desc_default(&bd);
+    bd.worker_count = 1;
+    ASSERT_EQ(verve_batch_create(&bd, &m.other), VERVE_OK);
+    bd.enqueue_task = enqueueMeddling;
+    bd.finish_task = finishNever;
+    bd.user_context = &m;
+    ASSERT_EQ(verve_batch_create(&bd, &m.self), VERVE_OK);
+    const float rewards[3] = {0, 0, 0};
+    const float continuous[3] = {0.1f, 0.2f, 0.3f};
+    uint32_t actions[3];
+    verve_result results[3];
+    ASSERT_EQ(verve_batch_update(m.self, agents, 3, rewards, nullptr, nullptr, 0, continuous, nullptr, 3, 0.1f, actions,
+                                 results),
+              VERVE_OK) << verve_last_error();
+    EXPECT_EQ(m.otherResult, VERVE_ERROR_INVALID_STATE);
+    for (auto r : m.otherResults) EXPECT_EQ(r, VERVE_ERROR_INVALID_STATE) << "a verdict of the refused call";
+    EXPECT_TRUE(m.batchSurvived) << "verve_batch_destroy freed a batch inside its own call";
+    EXPECT_TRUE(m.agentSurvived);
+    EXPECT_EQ(m.brain, nullptr);
+    // The bodies outlive their brain's handle and still work.
+    ASSERT_EQ(verve_batch_update(m.other, agents, 3, rewards, nullptr, nullptr, 0, continuous, nullptr, 3, 0.1f, actions,
+                                 results),
+              VERVE_OK) << verve_last_error();
+    verve_batch_destroy(m.self);
+    verve_batch_destroy(m.other);
+    for (auto* a : agents) verve_agent_destroy(a);
+}
+
 TEST(BatchDesc, BadDescriptorsAreRefused) {
     verve_batch* b = nullptr;
     EXPECT_EQ(verve_batch_desc_default(nullptr), VERVE_ERROR_INVALID_ARGUMENT);

@@ -175,6 +175,14 @@ void batchStep(const Step& s, World& a, World& b) {
     VERVE_FUZZ_CHECK((r == VERVE_OK) == (verve_last_error()[0] == '\0'));
     if (r != VERVE_OK) {
         VERVE_FUZZ_CHECK(a.steps() == before);
+        // Every verdict written (none left from before the call), and no agent reads as fine
+        // without some verdict saying why the call refused it (issue 32).
+        bool named = false;
+        for (uint32_t i = 0; i < n; ++i) {
+            VERVE_FUZZ_CHECK(results[i] != VERVE_ERROR_INTERNAL);
+            named = named || results[i] != VERVE_OK;
+        }
+        VERVE_FUZZ_CHECK(n == 0 || named);
         return;
     }
     // Each agent read its own number of values (a packed observation of another count shifts the

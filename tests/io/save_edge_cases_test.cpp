@@ -95,6 +95,69 @@ TEST_F(SaveEdgeCases, ASaveInProgressInAnotherProcessIsLeftAlone) {
     EXPECT_TRUE(bytes == saveAgentToString(a) || bytes == saveAgentToString(b));
 }
 
+TEST_F(SaveEdgeCases, ASaveInAnotherPidNamespaceIsLeftAlone) {
+    // As the test above, with the other process in a PID namespace of its own (a container
+    // sharing the folder): our pids mean nothing there and its pids nothing here, so neither may
+    // take the other's temporary file for a killed save's (issue 32: kill(pid, 0) said ESRCH).
+    const Agent a = smallAgent();
+    const Agent b = iotest::trainedAgent(iotest::mixedDescriptor(2), 50);
+    const fs::path target = dir_ / "agent.xml";
+    const pid_t child = ::fork();
+    ASSERT_GE(child, 0);
+    if (child == 0) {
+        if (::unshare(CLONE_NEWPID) != 0) ::_exit(77);
+        const pid_t inside = ::fork();  // pid 1 of the new namespace
+        if (inside < 0) ::_exit(78);
+        if (inside == 0) {
+            int failures = 0;
+            for (int i = 0; i < 400; ++i) failures += saveError(a, target) == ErrorCode::Internal ? 0 : 1;
+            ::_exit(failures > 100 ? 100 : failures);
+        }
+        int status = 0;
+        ::waitpid(inside, &status, 0);
+        ::_exit(WIFEXITED(status) ? WEXITSTATUS(status) : 99);
+    }
+    int failures = 0;
+    for (int i = 0; i < 400; ++i) failures += saveError(b, target) == ErrorCode::Internal ? 0 : 1;
+    int status = 0;
+    ::waitpid(child, &status, 0);
+    ASSERT_TRUE(WIFEXITED(status));
+    if (WEXITSTATUS(status) == 77) GTEST_SKIP() << "cannot make a PID namespace here (needs root or user namespaces)";
+    EXPECT_EQ(failures, 0) << "saves failed here: the other namespace removed their temporary files";
+    EXPECT_EQ(WEXITSTATUS(status), 0) << "saves failed in the other PID namespace";
+    EXPECT_TRUE(leftovers().empty());
+}
+
+TEST_F(SaveEdgeCases, SavingOverAFileKeepsItsPermissionsAndOwner) {
+    // A private save stays private (issue 32: the temporary file got the umask's 0644 and was
+    // renamed over a 0600 save).
+    const Agent agent = smallAgent();
+    const fs::path target = dir_ / "agent.xml";
+    for (const ::mode_t mode : {0600, 0640, 0604}) {
+        saveAgent(agent, target.string());
+        ASSERT_EQ(::chmod(target.c_str(), mode), 0);
+        if (::geteuid() == 0) {
+            ASSERT_EQ(::chown(target.c_str(), 65534, 65534), 0);
+        }
+        saveAgent(agent, target.string());
+        struct stat st;
+        ASSERT_EQ(::stat(target.c_str(), &st), 0);
+        EXPECT_EQ(st.st_mode & 0777, mode) << std::oct << "mode " << mode << " became " << (st.st_mode & 0777);
+        if (::geteuid() == 0) {
+            EXPECT_EQ(st.st_uid, 65534u);
+            EXPECT_EQ(st.st_gid, 65534u);
+        }
+        fs::remove(target);
+    }
+    // A new file gets the umask's permissions, as any file the game makes.
+    const ::mode_t mask = ::umask(022);
+    saveAgent(agent, target.string());
+    ::umask(mask);
+    struct stat st;
+    ASSERT_EQ(::stat(target.c_str(), &st), 0);
+    EXPECT_EQ(st.st_mode & 0777, 0644u);
+}
+
 TEST_F(SaveEdgeCases, NamesUpToTheFileSystemLimitSave) {
     const Agent agent = smallAgent();
     const std::string xml = saveAgentToString(agent);

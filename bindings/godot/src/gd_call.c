@@ -210,6 +210,7 @@ godot_variant vg_save_to_bytes(vg_call* c, vg_save_memory_fn save, const void* o
     size_t size = 0;
     godot_pool_byte_array bytes;
     godot_pool_byte_array_write_access* write;
+    uint8_t* buffer;
     godot_variant out;
     int ok;
     if (!vg_check(c, save(object, NULL, &size))) return vg_variant_nil();
@@ -220,7 +221,15 @@ godot_variant vg_save_to_bytes(vg_call* c, vg_save_memory_fn save, const void* o
     vg_core->godot_pool_byte_array_new(&bytes);
     vg_core->godot_pool_byte_array_resize(&bytes, (godot_int)size);
     write = vg_core->godot_pool_byte_array_write(&bytes);
-    ok = vg_check(c, save(object, vg_core->godot_pool_byte_array_write_access_ptr(write), &size));
+    buffer = vg_core->godot_pool_byte_array_write_access_ptr(write);
+    /* A PoolByteArray that could not grow keeps its size (and an empty one has no buffer): the
+     * second call must not run, since a NULL buffer would make it a size query (issue 32). */
+    if (vg_core->godot_pool_byte_array_size(&bytes) != (godot_int)size || buffer == NULL) {
+        ok = vg_fail(c, "out of memory: a PoolByteArray of %lu bytes could not be made [%s]", (unsigned long)size,
+                     verve_result_name(VERVE_ERROR_OUT_OF_MEMORY));
+    } else {
+        ok = vg_check(c, save(object, buffer, &size));
+    }
     vg_core->godot_pool_byte_array_write_access_destroy(write);
     if (ok) vg_core->godot_pool_byte_array_resize(&bytes, (godot_int)size);
     if (ok) vg_core->godot_variant_new_pool_byte_array(&out, &bytes);
