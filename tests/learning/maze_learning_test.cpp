@@ -3,6 +3,7 @@
 #include <gtest/gtest.h>
 
 #include "learning_window.hpp"
+#include "tasks/settings.hpp"
 
 using namespace verve::tasks;
 using namespace verve::tasks::testing;
@@ -13,4 +14,16 @@ TEST(MazeLearning, Maze2WithoutPlanningBeatsTheOriginal) {
     print("maze2 trials 41-50", w);
     EXPECT_LE(w.steps, 1124.0);
     EXPECT_GE(windowOf(c, 41, 51).reward, -1124.0);
+}
+
+// Known gap (not gating; docs/experiments.md, "Learning at defaults"): at the library's defaults
+// the continuous maze #2 is slower with the horizon its trials set than with the fixed 1 s one
+// (trials 46-50 over the defaults table's 40 runs: 242.2 steps with adaptation 0, 515.5 with it):
+// about one run in ten stalls for thousands of steps with its values at the long horizon's floor.
+TEST(KnownGapMazeLearning, ContinuousMaze2AtDefaultsNoSlowerThanWithAFixedHorizon) {
+    const LearningCurve c = runExperiment(findTask("maze2-continuous")->make, 40, 51, 1,
+                                          [](verve::AgentDescriptor& d) { d = atLibraryDefaults(d); });
+    const Window w = windowOf(c, 46, 51);
+    print("maze2-continuous at defaults, trials 46-50, 40 runs", w);
+    EXPECT_LE(w.steps, 242.2);
 }
