@@ -35,11 +35,15 @@ hosts=(
 )
 pattern="(^|[^a-z0-9.-])($(IFS='|'; echo "${hosts[*]}"))([^a-z0-9-]|$)"
 
-# The check must catch what it is for (the names are split so that this file names none of them).
-for planted in "URIs: http://deb.deb""ian.org/debian" "deb http://ftp.de.deb""ian.org/debian bookworm main" \
-    '<add key="x" value="https://api.nu''get.org/v3/index.json" />' "from NuGet"".org" \
-    "https://registry.npm""js.org/" "pip install -i https://py""pi.org/simple x"; do
-  grep -q -i -E "$pattern" <<<"$planted" || { echo "check_no_hosts.sh: the pattern misses: $planted" >&2; exit 2; }
+# The check must catch what it is for: each host pattern, written out as a plain name (its first
+# alternative, optional parts kept), is caught in a URL, an apt source line and a NuGet source, so
+# that this file names no host itself.
+for h in "${hosts[@]}"; do
+  sample=$(sed -E 's/\(\[a-z0-9-\]\+\[\.\]\)\*//g; s/\[\.\]/./g; s/\(([^|)]*)(\|[^)]*)?\)\??/\1/g; s/\?//g' <<<"$h")
+  for planted in "https://$sample/x" "URIs: http://$sample/debian" "deb http://$sample/debian bookworm main" \
+      "<add key=\"x\" value=\"https://$sample/v3/index.json\" />"; do
+    grep -q -i -E "$pattern" <<<"$planted" || { echo "check_no_hosts.sh: the pattern misses: $planted" >&2; exit 2; }
+  done
 done
 for fine in "https://learn.microsoft.com/dotnet/core/install/linux-debian" "apt-get install godot3-server" \
     "Debian 12 (bookworm)" "the NuGet package" "PyPI"; do
