@@ -11,6 +11,16 @@
 
 namespace {
 
+// An agent with one continuous sensor and two actions (nullptr if it could not be made).
+verve_agent* smallAgent() {
+    verve_agent_desc desc;
+    verve_agent_desc_default(&desc);
+    desc.num_continuous_sensors = 1;
+    desc.num_actions = 2;
+    verve_agent* agent = nullptr;
+    return verve_agent_create(&desc, &agent) == VERVE_OK ? agent : nullptr;
+}
+
 std::string memorySave(const verve_agent* agent) {
     size_t size = 0;
     EXPECT_EQ(verve_agent_save_memory(agent, nullptr, &size), VERVE_OK) << verve_last_error();
@@ -20,12 +30,8 @@ std::string memorySave(const verve_agent* agent) {
 }
 
 TEST(CApiPaths, SaveAndLoadThroughANonAsciiPath) {
-    verve_agent_desc desc;
-    verve_agent_desc_default(&desc);
-    desc.num_continuous_sensors = 1;
-    desc.num_actions = 2;
-    verve_agent* agent = nullptr;
-    ASSERT_EQ(verve_agent_create(&desc, &agent), VERVE_OK) << verve_last_error();
+    verve_agent* agent = smallAgent();
+    ASSERT_NE(agent, nullptr) << verve_last_error();
     for (int i = 0; i < 20; ++i) {
         const float sensor = static_cast<float>(i % 10) / 5.0f - 1.0f;
         uint32_t action = 0;
@@ -58,12 +64,8 @@ TEST(CApiPaths, SaveAndLoadThroughANonAsciiPath) {
 // without FILE_SHARE_DELETE, so a save meanwhile failed ("Access is denied"); the Windows build
 // runs this under Wine, whose share modes are Windows'.
 TEST(CApiPaths, SavesSucceedWhileAnotherThreadLoadsTheFile) {
-    verve_agent_desc desc;
-    verve_agent_desc_default(&desc);
-    desc.num_continuous_sensors = 1;
-    desc.num_actions = 2;
-    verve_agent* agent = nullptr;
-    ASSERT_EQ(verve_agent_create(&desc, &agent), VERVE_OK) << verve_last_error();
+    verve_agent* agent = smallAgent();
+    ASSERT_NE(agent, nullptr) << verve_last_error();
     const std::string folder = ::testing::TempDir() + "verve_save_while_loading";
     const std::string path = folder + "/agent.xml";
     std::filesystem::remove_all(std::filesystem::u8path(folder));

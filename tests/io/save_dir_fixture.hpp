@@ -58,6 +58,12 @@ protected:
     static ErrorCode saveError(const Agent& agent, const std::filesystem::path& path) {
         return errorOf([&] { saveAgent(agent, path.string()); });
     }
+    // How many of `count` saves of `agent` to `path` failed.
+    static int failedSaves(const Agent& agent, const std::filesystem::path& path, int count) {
+        int failures = 0;
+        for (int i = 0; i < count; ++i) failures += saveError(agent, path) == ErrorCode::Internal ? 0 : 1;
+        return failures;
+    }
 
     // Runs `body` in a child process (its return value is the exit status) and waits at most
     // `limit` for it; a child still running then is killed and reported as -1, so a call that

@@ -79,12 +79,10 @@ TEST_F(SaveEdgeCases, ASaveInProgressInAnotherProcessIsLeftAlone) {
     const pid_t child = ::fork();
     ASSERT_GE(child, 0);
     if (child == 0) {
-        int failures = 0;
-        for (int i = 0; i < 300; ++i) failures += saveError(a, target) == ErrorCode::Internal ? 0 : 1;
+        const int failures = failedSaves(a, target, 300);
         ::_exit(failures > 100 ? 100 : failures);
     }
-    int failures = 0;
-    for (int i = 0; i < 300; ++i) failures += saveError(b, target) == ErrorCode::Internal ? 0 : 1;
+    const int failures = failedSaves(b, target, 300);
     int status = 0;
     ::waitpid(child, &status, 0);
     EXPECT_EQ(failures, 0);
@@ -109,16 +107,14 @@ TEST_F(SaveEdgeCases, ASaveInAnotherPidNamespaceIsLeftAlone) {
         const pid_t inside = ::fork();  // pid 1 of the new namespace
         if (inside < 0) ::_exit(78);
         if (inside == 0) {
-            int failures = 0;
-            for (int i = 0; i < 400; ++i) failures += saveError(a, target) == ErrorCode::Internal ? 0 : 1;
+            const int failures = failedSaves(a, target, 400);
             ::_exit(failures > 100 ? 100 : failures);
         }
         int status = 0;
         ::waitpid(inside, &status, 0);
         ::_exit(WIFEXITED(status) ? WEXITSTATUS(status) : 99);
     }
-    int failures = 0;
-    for (int i = 0; i < 400; ++i) failures += saveError(b, target) == ErrorCode::Internal ? 0 : 1;
+    const int failures = failedSaves(b, target, 400);
     int status = 0;
     ::waitpid(child, &status, 0);
     ASSERT_TRUE(WIFEXITED(status));
