@@ -10,44 +10,17 @@ set -euo pipefail
 pkg=$1
 dest=$(mkdir -p "$2" && cd "$2" && pwd)
 shift 2
-members=()
-for path in "$@"; do members+=("*/$path"); done
+paths=("$@")
 if [ -d "$dest/$pkg" ]; then exit 0; fi
 
 state=$dest/.apt-$pkg
 mkdir -p "$state/sources.list.d" "$state/lists/partial" "$state/dl"
-# The mirror is the machine's own: the first release suite (no "-updates"/"-security") of a "deb" entry
-# in /etc/apt/sources.list.d/*.sources (deb822) or /etc/apt/sources.list{,.d/*.list} (one-line form).
-# For the parser's own test (scripts/check_fetch_source_mirror.sh): VERVE_APT_ETC names another folder
-# to read them from, and VERVE_FETCH_SOURCE_PRINT_MIRROR=1 prints what was found instead of fetching.
+# The mirror is the machine's own (scripts/lib/debian_mirror.sh). For the parser's own test
+# (scripts/check_fetch_source_mirror.sh): VERVE_APT_ETC names another folder to read the apt sources
+# from, and VERVE_FETCH_SOURCE_PRINT_MIRROR=1 prints what was found instead of fetching.
 etc=${VERVE_APT_ETC:-/etc/apt}
-mirror=$(
-  { cat "$etc"/sources.list.d/*.sources 2>/dev/null; echo; } | awk '
-    function flush() {
-      if (types ~ /(^| )deb( |$)/ && uri != "" && suite != "")
-        { print uri "|" suite "|" comps "|" signed; found = 1; exit }
-      types = uri = suite = comps = signed = ""
-    }
-    /^[ \t]*$/ { flush(); next }
-    /^#/ { next }
-    /^Types:/ { sub(/^Types:[ \t]*/, ""); types = $0 }
-    /^URIs:/ { uri = $2 }
-    /^Suites:/ { for (i = 2; i <= NF; i++) if ($i !~ /-/) { suite = $i; break } }
-    /^Components:/ { sub(/^Components:[ \t]*/, ""); comps = $0 }
-    /^Signed-By:/ { signed = $2 }
-    END { if (!found) flush() }' || true
-)
-if [ -z "$mirror" ]; then
-  mirror=$(cat "$etc/sources.list" "$etc"/sources.list.d/*.list 2>/dev/null | awk '
-    $1 == "deb" {
-      i = 2; opts = ""
-      if ($i ~ /^\[/) { while ($i !~ /\]$/) opts = opts " " $(i++); opts = opts " " $(i++) }
-      if ($(i + 1) ~ /-/) next
-      signed = ""; if (match(opts, /signed-by=[^] ]+/)) signed = substr(opts, RSTART + 10, RLENGTH - 10)
-      comps = ""; for (j = i + 2; j <= NF; j++) comps = comps (comps ? " " : "") $j
-      print $i "|" $(i + 1) "|" comps "|" signed; exit
-    }' || true)
-fi
+. "$(dirname "$0")/lib/debian_mirror.sh"
+mirror=$(debian_mirror "$etc")
 if [ -z "$mirror" ]; then
   echo "fetch_source.sh: no Debian mirror in this machine's apt sources (no \"deb\" entry for a release" >&2
   echo "suite in $etc/sources.list.d/*.sources or $etc/sources.list); add one and rerun." >&2
@@ -69,7 +42,13 @@ apt-get "${apt_opts[@]}" update -qq
 (cd "$state/dl" && apt-get "${apt_opts[@]}" source --download-only -qq "$pkg" >/dev/null)
 # Unpack the upstream tarball only: the Debian patches are not needed for what we take.
 tarball=$(ls "$state/dl/"*.orig.tar.* | head -n 1)
+# Most tarballs hold one top folder (dropped); some (luajit's) hold the tree itself.
+tops=$(tar -tf "$tarball" | sed 's#^\./##' | cut -d/ -f1 | sort -u | grep -v '^$' | wc -l)
+strip=0 prefix=
+if [ "$tops" -eq 1 ]; then strip=1 prefix='*/'; fi
+members=()
+for path in "${paths[@]}"; do members+=("$prefix$path"); done
 rm -rf "$dest/$pkg.partial"; mkdir -p "$dest/$pkg.partial"
-tar -xf "$tarball" -C "$dest/$pkg.partial" --strip-components=1 --wildcards "${members[@]}"
+tar -xf "$tarball" -C "$dest/$pkg.partial" --strip-components=$strip --wildcards "${members[@]}"
 mv "$dest/$pkg.partial" "$dest/$pkg"
 rm -rf "$state"
