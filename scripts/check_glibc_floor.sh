@@ -12,8 +12,13 @@ need=$(awk '/\*UND\*/' <<<"$dump" | grep -o 'GLIBC_[0-9][0-9.]*' | sed 's/GLIBC_
 if [ -z "$need" ]; then echo "$file: no versioned glibc symbol"; exit 0; fi
 newest=$(printf '%s\n%s\n' "$need" "$floor" | sort -V | tail -n 1)
 if [ "$newest" != "$floor" ]; then
-  users=$(awk '/\*UND\*/' <<<"$dump" | grep "GLIBC_$need " | awk '{print $NF}' | sort -u | tr '\n' ' ')
-  echo "$file: needs glibc $need, above the floor $floor (symbols: $users)" >&2
+  # Name every symbol above the floor: each is a reason (e.g. _dl_find_object, 2.35, from libgcc's
+  # unwinder; pthread_create, 2.34, once libpthread moved into libc).
+  above=$(awk '/\*UND\*/ && /\(GLIBC_/ { v = $0; sub(/.*\(GLIBC_/, "", v); sub(/\).*/, "", v); print v " " $NF }' <<<"$dump" |
+    while read -r v sym; do
+      [ "$(printf '%s\n%s\n' "$v" "$floor" | sort -V | tail -n 1)" = "$floor" ] || echo "$sym@GLIBC_$v"
+    done | sort -u | tr '\n' ' ')
+  echo "$file: needs glibc $need, above the floor $floor: $above" >&2
   exit 1
 fi
 echo "$file: glibc $need (floor $floor)"

@@ -18,8 +18,9 @@
 -- --seed N       decides starts, food places and each agent's random stream (default 1)
 -- --screenshot F at the end of --minutes, save the window as F in the save directory
 
--- Native modules cannot load from inside a .love archive: verve.so ships beside it.
-package.cpath = love.filesystem.getSourceBaseDirectory() .. "/?.so;" .. package.cpath
+-- Native modules cannot load from inside a .love archive: verve.so (verve.dll) ships beside it.
+local base = love.filesystem.getSourceBaseDirectory()
+package.cpath = base .. "/?.so;" .. base .. "/?.dll;" .. package.cpath
 local verve = require "verve"
 
 local ARENA = 10                        -- m, walls all round; the origin is the centre
