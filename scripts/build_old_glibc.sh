@@ -21,7 +21,7 @@ packages=build-essential,cmake,pkg-config,libeigen3-dev,luajit,libluajit-5.1-dev
 
 if [ "$(id -u)" -ne 0 ]; then echo "build_old_glibc.sh: needs root (debootstrap and chroot)" >&2; exit 1; fi
 command -v debootstrap >/dev/null || { echo "build_old_glibc.sh: debootstrap missing (apt-get install debootstrap)" >&2; exit 1; }
-[ -f third_party/pugixml/src/pugixml.cpp ] || { echo "build_old_glibc.sh: no third_party/pugixml (run ./scripts/setup.sh)" >&2; exit 1; }
+./scripts/fetch_source.sh pugixml third_party  # compiled into libverve; skipped when already there
 
 if [ ! -f "$root/.verve-root-ready" ]; then
   . scripts/lib/debian_mirror.sh

@@ -24,6 +24,7 @@ test_packages=(
   unzip jq                                     # C#: unpacking the NuGet package, checking the Unity package's JSON
   clang-14 libclang-rt-14-dev                  # libFuzzer targets (scripts/fuzz.sh)
   emscripten nodejs chromium                   # the web build, its Node.js tests and the page in headless Chromium
+  debootstrap                                  # the Debian 11 root of the release build (scripts/build_old_glibc.sh)
 )
 
 if [ "${1:-}" = "--test" ]; then packages+=("${test_packages[@]}"); fi
