@@ -6,9 +6,9 @@
 #                                           libverve.so, headers, CMake package, verve.pc and the Lua
 #                                           modules (LuaJIT, 5.4)
 # Then, inside the root: the C sample is built against the installed tree (pkg-config) and run, the
-# CMake package is consumed (tests/capi/consumer), the Lua suite runs under the root's luajit, and
+# CMake package is consumed (tests/capi/consumer), the Lua suite runs under its luajit and lua5.4, and
 # scripts/check_glibc_floor.sh checks every binary. The root is made once with debootstrap from the
-# machine's own Debian mirror and kept in build/bullseye/root (about 600 MB); delete it to start over.
+# machine's own Debian mirror and kept in build/bullseye/root (about 700 MB); delete it to start over.
 # Needs root (debootstrap, chroot) and the debootstrap package.
 set -euo pipefail
 cd "$(dirname "$0")/.."
@@ -35,7 +35,8 @@ if [ ! -f "$root/.verve-root-ready" ]; then
   # The archive keyring holds the keys of every supported release, bullseye's included.
   keyring=/usr/share/keyrings/debian-archive-keyring.gpg
   echo "== making the $suite root in $root (once; a few minutes)"
-  rm -rf "$root"
+  # --one-file-system: an interrupted debootstrap may leave /proc or /sys mounted inside.
+  rm -rf --one-file-system "$root"
   mkdir -p "$base"
   debootstrap --variant=minbase --keyring="$keyring" --include="$packages" "$suite" "$root" "$uri" \
     > "$base/debootstrap.log" 2>&1 || { tail -n 20 "$base/debootstrap.log" >&2; echo "build_old_glibc.sh: debootstrap failed (log: $base/debootstrap.log)" >&2; exit 1; }

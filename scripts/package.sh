@@ -8,8 +8,8 @@
 #                          Wine with luajit.exe); the LÖVE game's folders, the Linux one played by LÖVE
 #   godot/addons/verve     the GDNative addon (Linux), run by godot3-server from this folder
 #   csharp/                the NuGet and Unity packages, checked by bindings/csharp/test.sh
-# plus README.md (what is where) and SHA256SUMS. About 9 minutes on 2 cores from a fresh clone
-# (with the Debian 11 root made once), 5 minutes when rerun. Needs root (debootstrap, chroot) and
+# plus README.md (what is where) and SHA256SUMS. About 7 minutes on 2 cores from a fresh clone (2 of
+# them making the Debian 11 root, kept for reruns), about 2 minutes when rerun. Needs root (debootstrap, chroot) and
 # what ./scripts/setup.sh --test installs (which it runs).
 #   ./scripts/package.sh
 set -euo pipefail
@@ -28,8 +28,8 @@ rm -rf "$dist" "$work"
 mkdir -p "$dist" "$work"
 
 step "Linux: the Debian 11 build (scripts/build_old_glibc.sh)"
-./scripts/build_old_glibc.sh "$work/linux"
-linux=$work/linux
+./scripts/build_old_glibc.sh
+linux=$top/build/bullseye/install
 mkdir -p "$dist/c-sdk/linux-x86_64"
 cp -a "$linux/include" "$dist/c-sdk/linux-x86_64/"
 mkdir -p "$dist/c-sdk/linux-x86_64/lib"
