@@ -9,8 +9,8 @@
 #   godot/addons/verve     the GDNative addon (Linux), run by godot3-server from this folder
 #   csharp/                the NuGet and Unity packages, checked by bindings/csharp/test.sh
 # plus README.md (what is where) and SHA256SUMS. About 7 minutes on 2 cores from a fresh clone (2 of
-# them making the Debian 11 root, kept for reruns), about 2 minutes when rerun. Needs root (debootstrap, chroot) and
-# what ./scripts/setup.sh --test installs (which it runs).
+# them making the Debian 11 root, kept for reruns), about 2 minutes when rerun. Needs root
+# (debootstrap, chroot) and what ./scripts/setup.sh --test installs (it runs that first).
 #   ./scripts/package.sh
 set -euo pipefail
 cd "$(dirname "$0")/.."
