@@ -23,6 +23,7 @@ wine=$(command -v wine64 || command -v wine || echo /usr/lib/wine/wine64)
 export WINEPREFIX=$top/build/mingw/wine-prefix WINEDEBUG=-all WINEDLLOVERRIDES=mscoree,mshtml=
 step() { echo "== package.sh ($((SECONDS / 60))m$((SECONDS % 60))s): $*"; }
 
+if [ "$(id -u)" -ne 0 ]; then echo "package.sh: needs root (the Debian 11 root: debootstrap, chroot)" >&2; exit 1; fi
 ./scripts/setup.sh --test
 rm -rf "$dist" "$work"
 mkdir -p "$dist" "$work"
