@@ -38,10 +38,11 @@ pattern="(^|[^a-z0-9.-])($(IFS='|'; echo "${hosts[*]}"))([^a-z0-9-]|$)"
 # The check must catch what it is for: each host pattern, written out as a plain name (its first
 # alternative, optional parts kept), is caught in a URL, an apt source line and a NuGet source, so
 # that this file names no host itself.
+scheme=https
 for h in "${hosts[@]}"; do
   sample=$(sed -E 's/\(\[a-z0-9-\]\+\[\.\]\)\*//g; s/\[\.\]/./g; s/\(([^|)]*)(\|[^)]*)?\)\??/\1/g; s/\?//g' <<<"$h")
-  for planted in "https://$sample/x" "URIs: http://$sample/debian" "deb http://$sample/debian bookworm main" \
-      "<add key=\"x\" value=\"https://$sample/v3/index.json\" />"; do
+  url="${scheme}://$sample/x"
+  for planted in "$url" "URIs: $url" "deb $url suite main" "<add key=\"x\" value=\"$url\" />"; do
     grep -q -i -E "$pattern" <<<"$planted" || { echo "check_no_hosts.sh: the pattern misses: $planted" >&2; exit 2; }
   done
 done
