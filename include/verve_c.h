@@ -235,6 +235,14 @@ VERVE_API verve_result VERVE_CALL verve_agent_update(verve_agent* agent, float r
 VERVE_API verve_result VERVE_CALL verve_agent_update_masked(verve_agent* agent, float reward,
     const int32_t* discrete, uint32_t n_discrete, const float* continuous, uint32_t n_continuous,
     float dt, const uint8_t* action_mask, uint32_t n_actions, uint32_t* out_action);
+/* A demonstrated step (docs/teaching.md): as verve_agent_update, but the host took `action` (a player
+ * or the game's scripted AI drove the NPC). The agent learns from it as from its own choice and is
+ * pulled towards it; the next verve_agent_update acts on its own again. action_mask: NULL with
+ * n_actions 0 for every action, or flags as in verve_agent_update_masked. An action out of range or
+ * forbidden by the mask is refused and changes nothing. */
+VERVE_API verve_result VERVE_CALL verve_agent_update_demonstrated(verve_agent* agent, float reward,
+    const int32_t* discrete, uint32_t n_discrete, const float* continuous, uint32_t n_continuous,
+    float dt, const uint8_t* action_mask, uint32_t n_actions, uint32_t action);
 /* Ends a trial that really ended (goal reached, NPC died): final_reward is learned as the last
  * reward there is, nothing is expected after it. */
 VERVE_API verve_result VERVE_CALL verve_agent_end_episode(verve_agent* agent, float final_reward);

@@ -67,6 +67,11 @@ public:
     // 1). A masked action is never chosen and so gets no credit. Imagined planning steps are not
     // masked: the mask says what is possible now, not later.
     std::uint32_t update(float reward, ObservationView obs, float dt, ActionMask mask);
+    // A demonstrated step (docs/teaching.md): as update, but the host took `action` (a player or a
+    // scripted AI drove the NPC). The agent learns from it as from its own choice and is pulled
+    // towards it; the next plain update acts on its own again. `action` must be one the mask
+    // allows (any, without a mask); a refused call changes nothing.
+    void updateDemonstrated(float reward, ObservationView obs, float dt, std::uint32_t action, ActionMask mask = {});
 
     // Ends a trial: `finalReward` is terminal (no value is bootstrapped past it), then the
     // short-term memory is cleared. The next update starts a fresh trial.

@@ -68,6 +68,21 @@ VERVE_API verve_result VERVE_CALL verve_agent_update_masked(verve_agent* agent, 
     });
 }
 
+VERVE_API verve_result VERVE_CALL verve_agent_update_demonstrated(verve_agent* agent, float reward,
+                                                                  const int32_t* discrete, uint32_t n_discrete,
+                                                                  const float* continuous, uint32_t n_continuous,
+                                                                  float dt, const uint8_t* action_mask,
+                                                                  uint32_t n_actions, uint32_t action) {
+    return guarded(__func__, [&] {
+        const AgentUse use(agent);
+        if (n_discrete > 0) requireArg(discrete, "discrete (with n_discrete > 0)");
+        if (n_continuous > 0) requireArg(continuous, "continuous (with n_continuous > 0)");
+        if (action_mask == nullptr && n_actions != 0) requireArg(action_mask, "action_mask (with n_actions > 0)");
+        use.agent().updateDemonstrated(reward, verve::ObservationView{discrete, n_discrete, continuous, n_continuous},
+                                       dt, action, verve::ActionMask{action_mask, n_actions});
+    });
+}
+
 VERVE_API verve_result VERVE_CALL verve_agent_end_episode(verve_agent* agent, float final_reward) {
     return guarded(__func__, [&] {
         const AgentUse use(agent);

@@ -4,6 +4,7 @@
 #include <utility>
 
 #include "core/agent_impl.hpp"
+#include "core/demonstration.hpp"
 #include "core/observation_check.hpp"
 #include "core/prefetch.hpp"
 #include "core/warnings.hpp"
@@ -240,9 +241,19 @@ std::uint32_t Agent::update(float reward, const Observation& obs, float dt) { re
 std::uint32_t Agent::update(float reward, ObservationView obs, float dt) { return update(reward, obs, dt, ActionMask{}); }
 
 std::uint32_t Agent::update(float reward, ObservationView obs, float dt, ActionMask mask) {
-    Impl& s = *impl_;
+    return impl_->step(reward, obs, dt, mask, nullptr);
+}
+
+void Agent::updateDemonstrated(float reward, ObservationView obs, float dt, std::uint32_t action, ActionMask mask) {
+    impl_->step(reward, obs, dt, mask, &action);
+}
+
+std::uint32_t Agent::Impl::step(float reward, ObservationView obs, float dt, ActionMask mask,
+                                const std::uint32_t* demonstrated) {
+    Impl& s = *this;
     // Everything is checked before anything changes.
     if (mask.allowed != nullptr || mask.count != 0) core::checkActionMask(s.desc, mask.allowed, mask.count);
+    if (demonstrated != nullptr) core::checkDemonstratedAction(s.desc, *demonstrated, mask.allowed);
     core::checkObservation(s.desc, obs);
     core::checkFinite(reward, "reward");
     core::checkTimeStep(dt);
@@ -284,12 +295,18 @@ std::uint32_t Agent::update(float reward, ObservationView obs, float dt, ActionM
 
     // A learning agent that samples explores a state it values at the floor (core::hopelessValue); a
     // greedy or frozen one plays its policy.
-    const bool samples = s.selection == ActionSelection::Sample;
+    // A demonstrated step draws nothing: what the policy would do is only read (probabilities, V).
+    const bool samples = s.selection == ActionSelection::Sample && demonstrated == nullptr;
     const float hopeless = s.learning && samples ? core::hopelessValue(k.values) : -std::numeric_limits<float>::infinity();
-    const std::uint32_t action = s.td.chooseAction(s.weights, s.current, s.rng, s.probabilities, s.latestValue,
-                                                   mask.allowed, !samples, hopeless, s.ahead);
+    std::uint32_t action = s.td.chooseAction(s.weights, s.current, s.rng, s.probabilities, s.latestValue,
+                                             mask.allowed, !samples, hopeless, s.ahead);
     s.stats.value = core::bounded(s.latestValue, k.values);
     s.recordProbabilities(mask.allowed, s.latestValue <= hopeless);
+    if (demonstrated != nullptr) {
+        // The demonstrator's action stands for the agent's own (core/demonstration.hpp).
+        action = *demonstrated;
+        if (s.learning) core::imitate(s.weights, s.current, action, mask.allowed, k.rates.policy, k.rates.policyBound);
+    }
     if (s.learning && s.learnsFromRealSteps()) s.td.mark(s.current, action, s.rep.featureCount());
 
     std::swap(s.previous, s.current);

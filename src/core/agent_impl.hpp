@@ -30,6 +30,8 @@ struct Agent::Impl {
     // A body of a shared brain: its own short-term memory and random stream `seed`.
     Impl(std::shared_ptr<BrainState> shared, std::uint64_t seed);
 
+    // Agent::update and Agent::updateDemonstrated (`demonstrated`: the action the host took).
+    std::uint32_t step(float reward, ObservationView obs, float dt, ActionMask mask, const std::uint32_t* demonstrated);
     StepConstants constantsFor(float dt) const;
     // tau_discount, or the horizon the trials set with Adaptation::Horizon (core/horizon.hpp).
     float tauDiscount(float dt) const;

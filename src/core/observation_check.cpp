@@ -35,6 +35,16 @@ void checkActionMask(const AgentDescriptor& desc, const std::uint8_t* allowed, s
     if (!any) refuse("the action mask allows no action (at least one flag must be 1)");
 }
 
+void checkDemonstratedAction(const AgentDescriptor& desc, std::uint32_t action, const std::uint8_t* allowed) {
+    if (action >= desc.numActions) {
+        refuse("the demonstrated action " + std::to_string(action) + " is out of range (the agent has " +
+               std::to_string(desc.numActions) + " actions)");
+    }
+    if (allowed != nullptr && allowed[action] == 0) {
+        refuse("the demonstrated action " + std::to_string(action) + " is one the action mask forbids");
+    }
+}
+
 void checkObservation(const AgentDescriptor& desc, ObservationView obs) {
     const auto nd = desc.discreteSensors.size();
     const auto nc = desc.continuousSensors.size();

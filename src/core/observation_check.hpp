@@ -20,5 +20,7 @@ void checkFinite(float value, const char* what);
 void checkTimeStep(float dt);
 // An action mask: numActions flags, each 0 or 1, at least one 1.
 void checkActionMask(const AgentDescriptor& desc, const std::uint8_t* allowed, std::size_t count);
+// A demonstrated action: one of the agent's, and one `allowed` (a checked mask, or nullptr) allows.
+void checkDemonstratedAction(const AgentDescriptor& desc, std::uint32_t action, const std::uint8_t* allowed);
 
 }  // namespace verve::core

@@ -164,6 +164,40 @@ TEST_F(CApi, NullPointersAreRefused) {
     EXPECT_EQ(saved(), before);
 }
 
+TEST_F(CApi, DemonstratedStepsAreValidatedAndPullThePolicyTowardsTheirAction) {
+    int32_t d = 1;
+    float c = 0.3f;
+    const uint8_t onlyFirst[3] = {1, 0, 0}, all[3] = {1, 1, 1};
+    const std::string before = saved();
+    expectRefusedUnchanged(VERVE_ERROR_INVALID_ARGUMENT,
+                           verve_agent_update_demonstrated(nullptr, 0.0f, &d, 1, &c, 1, 0.1f, nullptr, 0, 0));
+    expectRefusedUnchanged(VERVE_ERROR_INVALID_ARGUMENT,
+                           verve_agent_update_demonstrated(agent_, 0.0f, &d, 1, &c, 1, 0.1f, nullptr, 0, 3));
+    expectRefusedUnchanged(VERVE_ERROR_INVALID_ARGUMENT,
+                           verve_agent_update_demonstrated(agent_, 0.0f, &d, 1, &c, 1, 0.1f, onlyFirst, 3, 2));
+    expectRefusedUnchanged(VERVE_ERROR_INVALID_ARGUMENT,
+                           verve_agent_update_demonstrated(agent_, 0.0f, &d, 1, &c, 1, 0.1f, nullptr, 3, 0));
+    expectRefusedUnchanged(VERVE_ERROR_INVALID_ARGUMENT,
+                           verve_agent_update_demonstrated(agent_, kNaN, &d, 1, &c, 1, 0.1f, nullptr, 0, 0));
+    expectRefusedUnchanged(VERVE_ERROR_INVALID_ARGUMENT,
+                           verve_agent_update_demonstrated(agent_, 0.0f, nullptr, 1, &c, 1, 0.1f, nullptr, 0, 0));
+    EXPECT_NE(lastError().find("NULL"), std::string::npos) << lastError();
+    EXPECT_EQ(saved(), before);
+
+    // Shown action 2 at one state, with no reward at all: the policy there comes to prefer it.
+    for (int i = 0; i < 10; ++i) {
+        ASSERT_EQ(verve_agent_update_demonstrated(agent_, 0.0f, &d, 1, &c, 1, 0.1f, i % 2 ? all : nullptr,
+                                                  i % 2 ? 3 : 0, 2),
+                  VERVE_OK)
+            << verve_last_error();
+    }
+    uint32_t action = 99;
+    ASSERT_EQ(verve_agent_update(agent_, 0.0f, &d, 1, &c, 1, 0.1f, &action), VERVE_OK);
+    float p[3] = {0, 0, 0};
+    ASSERT_EQ(verve_agent_get_action_probabilities(agent_, p, 3), VERVE_OK);
+    EXPECT_GT(p[2], 0.75f) << p[0] << " " << p[1];  // uniform: 1/3; 0.87 measured
+}
+
 TEST_F(CApi, PolicyReadOutsGreedyModeMasksAndTruncation) {
     float p[3] = {0, 0, 0};
     ASSERT_EQ(verve_agent_get_action_probabilities(agent_, p, 3), VERVE_OK) << verve_last_error();

@@ -64,7 +64,7 @@ extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size) {
         const Visible before = visible(agent);
         verve_result r = VERVE_OK;
         bool changes = false;  // a successful call of this kind may change what visible() reports
-        switch (in.ConsumeIntegralInRange<int>(0, 15)) {
+        switch (in.ConsumeIntegralInRange<int>(0, 16)) {
             case 0:
             case 1:
             case 2: {
@@ -138,6 +138,19 @@ extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size) {
                 r = verve_agent_update_masked(agent, anyFloat(in, -1.5f, 1.5f), o.discrete, o.numDiscrete, o.continuous,
                                               o.numContinuous, anyFloat(in, 0.001f, 1.0f), n <= 64 ? mask : nullptr, n, &action);
                 if (r == VERVE_OK) VERVE_FUZZ_CHECK(action < d.num_actions && action < 64 && mask[action] == 1);
+                changes = true;
+                break;
+            }
+            case 16: {  // a demonstrated step: any action, any mask (or none); a refusal changes nothing
+                const verve_fuzz::Observation o = verve_fuzz::anyObservation(in, d);
+                uint8_t mask[64];
+                for (uint8_t& m : mask) m = in.ConsumeIntegralInRange<int>(0, 15) == 0 ? in.ConsumeIntegral<uint8_t>() : in.ConsumeIntegralInRange<uint8_t>(0, 1);
+                const bool masked = in.ConsumeBool();
+                const uint32_t n = masked ? (in.ConsumeBool() ? d.num_actions : in.ConsumeIntegralInRange<uint32_t>(0, 64)) : 0;
+                const uint32_t action = in.ConsumeBool() ? in.ConsumeIntegralInRange<uint32_t>(0, d.num_actions - 1) : in.ConsumeIntegral<uint32_t>();
+                r = verve_agent_update_demonstrated(agent, anyFloat(in, -1.5f, 1.5f), o.discrete, o.numDiscrete, o.continuous,
+                                                    o.numContinuous, anyFloat(in, 0.001f, 1.0f), masked ? mask : nullptr, n, action);
+                if (r == VERVE_OK) VERVE_FUZZ_CHECK(action < d.num_actions && (!masked || mask[action] == 1));
                 changes = true;
                 break;
             }

@@ -1,4 +1,4 @@
-// Allocation failure: a fixed scenario (create, 120 updates with RBF growth, planning and an
+// Allocation failure: a fixed scenario (create, 120 updates, a quarter of them demonstrated, with RBF growth, planning and an
 // episode end, an XML save and load, then a binary save and load) runs once for every N, with the N-th allocation failing. The
 // call that meets the failure must return VERVE_ERROR_OUT_OF_MEMORY and leave the agent exactly
 // as it was (its save byte-identical), and the scenario, retried from there, must end in the same
@@ -41,6 +41,10 @@ public:
             const int32_t disc = i % 3;
             const float c[2] = {std::sin(0.9f * static_cast<float>(i)), std::cos(0.4f * static_cast<float>(i))};
             uint32_t action = 0;
+            if (i % 4 == 1) {  // a demonstrated step (docs/teaching.md)
+                return verve_agent_update_demonstrated(agent_, i % 9 == 0 ? 1.0f : -0.1f, &disc, 1, c, 2, 0.1f, nullptr, 0,
+                                                       static_cast<uint32_t>(i % 2));
+            }
             return verve_agent_update(agent_, i % 9 == 0 ? 1.0f : -0.1f, &disc, 1, c, 2, 0.1f, &action);
         }
         if (i == 121 || i == 124) {  // the size query, then the save itself (XML, then binary)

@@ -1,0 +1,28 @@
+#include "core/demonstration.hpp"
+
+#include <algorithm>
+#include <cmath>
+
+#include "core/td_learner.hpp"
+
+namespace verve::core {
+
+void imitate(WeightTable& w, const std::vector<ActiveFeature>& phi, std::uint32_t action, const std::uint8_t* allowed,
+             float rate, float bound) {
+    const std::uint32_t actions = w.layout().numActions;
+    for (std::uint32_t b = 0; b < actions; ++b) {
+        if (!actionAllowed(allowed, b)) continue;
+        float x = 0.0f;
+        for (const ActiveFeature& f : phi) x += w.row(f.index)[WeightLayout::kPolicy + b] * f.activation;
+        // Saturated preferences (|x| beyond ~88) give a step of 0 or +-1: always finite.
+        const float target = b == action ? 1.0f : 0.0f;
+        const float step = rate * (target - 1.0f / (1.0f + std::exp(-x)));
+        for (const ActiveFeature& f : phi) {
+            float& weight = w.row(f.index)[WeightLayout::kPolicy + b];
+            weight += step * f.activation;
+            if (bound > 0.0f) weight = std::clamp(weight, -bound, bound);
+        }
+    }
+}
+
+}  // namespace verve::core
