@@ -102,6 +102,9 @@ export class Agent {
   readonly disposed: boolean;
   /** One step; returns the action (0 .. actions - 1). mask: one flag per action, at least one true. */
   update(reward: number, observation: Observation | null | undefined, dt: number, mask?: ArrayLike<boolean | 0 | 1>): number;
+  /** A step the player or a scripted AI took (docs/teaching.md): `action` is learned from as the agent's own. */
+  updateDemonstrated(reward: number, observation: Observation | null | undefined, dt: number, action: number,
+    mask?: ArrayLike<boolean | 0 | 1>): void;
   endEpisode(finalReward: number): void;
   truncateEpisode(reward: number): void;
   resetShortTermMemory(): void;

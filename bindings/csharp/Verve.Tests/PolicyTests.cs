@@ -68,6 +68,20 @@ namespace Verve.Tests
         }
 
         [Fact]
+        public void DemonstratedActionsBecomeThePolicysAndBadOnesAreRefused()
+        {
+            using var agent = Cue();
+            for (int i = 0; i < 10; i++) agent.UpdateDemonstrated(0f, StateA, default, 0.1f, 2);
+            agent.Update(0f, StateA, null, 0.1f);
+            Assert.True(agent.ActionProbabilities[2] > 0.6f, $"p[2] = {agent.ActionProbabilities[2]}");
+            byte[] before = agent.SaveToBytes();
+            Assert.Throws<ArgumentOutOfRangeException>(() => agent.UpdateDemonstrated(0f, StateA, default, 0.1f, -1));
+            Assert.Throws<VerveException>(() => agent.UpdateDemonstrated(0f, StateA, default, 0.1f, 3));
+            Assert.Throws<VerveException>(() => agent.UpdateDemonstrated(0f, StateA, default, 0.1f, 0, new byte[] { 0, 1, 1 }));
+            Assert.Equal(before, agent.SaveToBytes());
+        }
+
+        [Fact]
         public void TruncationBootstrapsFromTheLastState()
         {
             using var agent = Cue();

@@ -82,6 +82,32 @@ namespace Verve
             return (int)action;
         }
 
+        /// <summary>A demonstrated step (docs/teaching.md): as <see cref="Update(float, ReadOnlySpan{int}, ReadOnlySpan{float}, float)"/>,
+        /// but the host took <paramref name="action"/> (a player or a scripted AI drove the NPC). The agent learns from it as
+        /// from its own choice and is pulled towards it; the next <c>Update</c> acts on its own again.</summary>
+        /// <param name="reward">What the previous action earned.</param>
+        /// <param name="discrete">One value per discrete sensor, each in [0, its value count).</param>
+        /// <param name="continuous">One value per continuous sensor, in [-1, 1].</param>
+        /// <param name="dt">Seconds since the previous step, &gt; 0.</param>
+        /// <param name="action">The action the host took, in [0, <see cref="AgentOptions.Actions"/>).</param>
+        /// <param name="allowed">Empty for every action, or one flag per action as in the masked <c>Update</c>;
+        /// the action must be one it allows.</param>
+        /// <exception cref="ArgumentOutOfRangeException"><paramref name="action"/> is negative.</exception>
+        /// <exception cref="VerveException">As <c>Update</c>, or an action out of range or forbidden by the mask.</exception>
+        public unsafe void UpdateDemonstrated(float reward, ReadOnlySpan<int> discrete, ReadOnlySpan<float> continuous, float dt,
+            int action, ReadOnlySpan<byte> allowed = default)
+        {
+            if (action < 0) throw new ArgumentOutOfRangeException(nameof(action), action, "an action is an index from 0");
+            AgentHandle handle = Handle;
+            fixed (int* d = &MemoryMarshal.GetReference(discrete))
+            fixed (float* c = &MemoryMarshal.GetReference(continuous))
+            fixed (byte* m = &MemoryMarshal.GetReference(allowed))
+            {
+                VerveException.ThrowIfFailed(NativeMethods.verve_agent_update_demonstrated(handle, reward,
+                    d, (uint)discrete.Length, c, (uint)continuous.Length, dt, m, (uint)allowed.Length, (uint)action));
+            }
+        }
+
         /// <summary>Ends a trial that really ended (goal reached, NPC died): <paramref name="finalReward"/> is the
         /// last reward there is; nothing is expected after it.</summary>
         public void EndEpisode(float finalReward) =>

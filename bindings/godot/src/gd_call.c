@@ -100,7 +100,8 @@ int vg_arg_type(vg_call* c, int i, const char* name, godot_variant_type type) {
              : type == GODOT_VARIANT_TYPE_DICTIONARY ? "a Dictionary"
              : type == GODOT_VARIANT_TYPE_ARRAY ? "an Array"
              : type == GODOT_VARIANT_TYPE_POOL_BYTE_ARRAY ? "a PoolByteArray"
-             : type == GODOT_VARIANT_TYPE_BOOL ? "a bool" : "of another type";
+             : type == GODOT_VARIANT_TYPE_BOOL ? "a bool"
+             : type == GODOT_VARIANT_TYPE_INT ? "an int" : "of another type";
     return vg_fail(c, "%s must be %s (got %s)", name, expected, vg_type_name(c->argv[i]));
 }
 

@@ -87,8 +87,9 @@ VG_METHOD(save_bytes) {
 /* Most actions an agent may have (the library's limit): a mask is read onto the stack. */
 #define VG_MAX_ACTIONS 4096
 
-/* update and update_masked: argv is (reward, discrete, continuous, dt[, mask]). */
-static godot_variant vg_step(void* user_data, const char* method, int argc, godot_variant** argv, int masked) {
+/* update, update_masked and update_demonstrated: argv is (reward, discrete, continuous, dt[, mask or action]). */
+enum { VG_PLAIN, VG_MASKED, VG_DEMONSTRATED };
+static godot_variant vg_step(void* user_data, const char* method, int argc, godot_variant** argv, int kind) {
     vg_call c;
     verve_agent* a;
     float reward = 0.0f, dt = 0.0f;
@@ -97,13 +98,16 @@ static godot_variant vg_step(void* user_data, const char* method, int argc, godo
     int32_t flags[VG_MAX_ACTIONS];
     uint8_t mask[VG_MAX_ACTIONS];
     uint32_t n_discrete = 0, n_continuous = 0, n_mask = 0, action = 0, i;
-    if (!vg_begin(&c, user_data, method, argc, argv, 4 + masked, 4 + masked) || !vg_agent_handle(&c, &a) ||
+    int64_t shown = 0;
+    const int extra = kind == VG_PLAIN ? 0 : 1;
+    if (!vg_begin(&c, user_data, method, argc, argv, 4 + extra, 4 + extra) || !vg_agent_handle(&c, &a) ||
         !vg_arg_float(&c, 0, "reward", &reward) ||
         !vg_read_ints(&c, argv[1], "discrete", discrete, VERVE_MAX_DISCRETE_SENSORS, &n_discrete) ||
         !vg_read_floats(&c, argv[2], "continuous", continuous, VERVE_MAX_CONTINUOUS_SENSORS, &n_continuous) ||
         !vg_arg_float(&c, 3, "dt", &dt) ||
-        (masked && !vg_read_ints(&c, argv[4], "mask", flags, VG_MAX_ACTIONS, &n_mask)))
-        return vg_variant_int(-1);
+        (kind == VG_MASKED && !vg_read_ints(&c, argv[4], "mask", flags, VG_MAX_ACTIONS, &n_mask)) ||
+        (kind == VG_DEMONSTRATED && !vg_arg_type(&c, 4, "action", GODOT_VARIANT_TYPE_INT)))
+        return kind == VG_DEMONSTRATED ? vg_variant_bool(0) : vg_variant_int(-1);
     for (i = 0; i < n_mask; ++i) {
         if (flags[i] != 0 && flags[i] != 1) {
             vg_fail(&c, "mask[%u] must be 0 or 1 (got %d)", i, (int)flags[i]);
@@ -111,22 +115,36 @@ static godot_variant vg_step(void* user_data, const char* method, int argc, godo
         }
         mask[i] = (uint8_t)flags[i];
     }
-    if (!vg_check(&c, masked ? verve_agent_update_masked(a, reward, discrete, n_discrete, continuous, n_continuous, dt,
-                                                         mask, n_mask, &action)
-                             : verve_agent_update(a, reward, discrete, n_discrete, continuous, n_continuous, dt,
-                                                  &action)))
+    if (kind == VG_DEMONSTRATED) {
+        shown = vg_core->godot_variant_as_int(argv[4]);
+        if (shown < 0 || shown > (int64_t)UINT32_MAX) {
+            vg_fail(&c, "action must be 0 .. actions-1 (got %lld)", (long long)shown);
+            return vg_variant_bool(0);
+        }
+        return vg_variant_bool(vg_check(&c, verve_agent_update_demonstrated(a, reward, discrete, n_discrete, continuous,
+                                                                            n_continuous, dt, NULL, 0, (uint32_t)shown)));
+    }
+    if (!vg_check(&c, kind == VG_MASKED ? verve_agent_update_masked(a, reward, discrete, n_discrete, continuous,
+                                                                    n_continuous, dt, mask, n_mask, &action)
+                                        : verve_agent_update(a, reward, discrete, n_discrete, continuous, n_continuous,
+                                                             dt, &action)))
         return vg_variant_int(-1);
     return vg_variant_int(action);
 }
 
 VG_METHOD(update) {
     VG_UNUSED;
-    return vg_step(user_data, "update", argc, argv, 0);
+    return vg_step(user_data, "update", argc, argv, VG_PLAIN);
 }
 
 VG_METHOD(update_masked) {
     VG_UNUSED;
-    return vg_step(user_data, "update_masked", argc, argv, 1);
+    return vg_step(user_data, "update_masked", argc, argv, VG_MASKED);
+}
+
+VG_METHOD(update_demonstrated) {
+    VG_UNUSED;
+    return vg_step(user_data, "update_demonstrated", argc, argv, VG_DEMONSTRATED);
 }
 
 VG_METHOD(end_episode) {

@@ -143,6 +143,13 @@ func test_episode_learning_readouts():
 	check_error(a, a.update_masked(0.0, [1], [0.2, -0.3], 0.1, [1, 2, 0]), -1, "mask[1] must be 0 or 1 (got 2)",
 		"a mask flag that is not 0 or 1")
 	check_error(a, a.update_masked(0.0, [1], [0.2, -0.3], 0.1, [1, 1]), -1, "has 2 flags, the agent has 3 actions", "a mask of the wrong size")
+	for i in range(10):
+		check(a.update_demonstrated(0.0, [2], [0.5, 0.5], 0.1, 1), "a demonstrated step")
+	a.update(0.0, [2], [0.5, 0.5], 0.1)
+	check(a.get_action_probabilities()[1] > 0.5, "demonstrations pull the policy towards the shown action")
+	check_error(a, a.update_demonstrated(0.0, [2], [0.5, 0.5], 0.1, 3), false, "out of range", "a demonstrated action out of range")
+	check_error(a, a.update_demonstrated(0.0, [2], [0.5, 0.5], 0.1, -1), false, "action must be 0 .. actions-1", "a negative demonstrated action")
+	check_error(a, a.update_demonstrated(0.0, [2], [0.5, 0.5], 0.1, 1.5), false, "action must be an int", "a demonstrated action that is not an int")
 	a.greedy = "yes"
 	check("greedy must be a bool" in a.get_last_error() and a.greedy == true, "greedy takes bools only")
 	a.greedy = false

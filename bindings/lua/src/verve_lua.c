@@ -455,6 +455,27 @@ static int lv_update(lua_State* L) {
     return 1;
 }
 
+/* agent:update_demonstrated(reward, obs, dt, action [, mask]): the host took `action` (1-based). */
+static int lv_update_demonstrated(lua_State* L) {
+    float reward, dt;
+    uint32_t action = 0, n = 0;
+    uint8_t mask[LV_MAX_ACTIONS];
+    lv_obs o;
+    verve_result r;
+    luaL_checkudata(L, 1, LV_AGENT_MT);
+    reward = lv_to_float(luaL_checknumber(L, 2));
+    dt = lv_to_float(luaL_checknumber(L, 4));
+    if (!lv_get_u32(L, 5, &action) || action == 0)
+        return luaL_error(L, "verve: update_demonstrated: action must be an integer from 1 to the number of actions");
+    lv_read_obs(L, 3, "update_demonstrated", 0, &o);
+    if (!lua_isnoneornil(L, 6)) n = lv_read_mask(L, 6, mask);
+    /* Every Lua input is read before the handle is taken: a metamethod may close the agent. */
+    r = verve_agent_update_demonstrated(lv_open_agent(L), reward, o.discrete, o.n_discrete, o.continuous,
+                                        o.n_continuous, dt, lua_isnoneornil(L, 6) ? NULL : mask, n, action - 1);
+    if (r != VERVE_OK) return lv_fail_indexed(L, "update_demonstrated", r);
+    return 0;
+}
+
 static int lv_end_episode(lua_State* L) {
     float reward = lv_to_float(luaL_checknumber(L, 2));
     verve_result r = verve_agent_end_episode(lv_open_agent(L), reward);
@@ -969,6 +990,7 @@ static const luaL_Reg lv_batch_meta[] = {
 
 static const luaL_Reg lv_agent_methods[] = {
     {"update", lv_update},
+    {"update_demonstrated", lv_update_demonstrated},
     {"end_episode", lv_end_episode},
     {"truncate_episode", lv_truncate_episode},
     {"set_action_selection", lv_set_action_selection},

@@ -67,3 +67,16 @@ T.check("policy_weight_bound is a descriptor field", function()
   assert(verve.defaults().policy_weight_bound == 0)
   T.expect_error("policy_weight_bound", function() verve.agent(T.desc(CUE, { policy_weight_bound = -1 })) end)
 end)
+
+T.check("update_demonstrated(): the shown action becomes the policy's; bad actions are refused", function()
+  local agent = verve.agent(CUE)
+  for _ = 1, 10 do agent:update_demonstrated(0, { discrete = { 1 } }, 0.1, 3) end
+  agent:update(0, { discrete = { 1 } }, 0.1)
+  assert(agent:action_probabilities()[3] > 0.6, "p[3] = " .. agent:action_probabilities()[3]) -- 1/3 untaught
+  T.expect_error("action must be an integer", function() agent:update_demonstrated(0, { discrete = { 1 } }, 0.1, 0) end)
+  T.expect_library_error("update_demonstrated", function() agent:update_demonstrated(0, { discrete = { 1 } }, 0.1, 4) end)
+  T.expect_error("forbids", function()
+    agent:update_demonstrated(0, { discrete = { 1 } }, 0.1, 1, { false, true, true })
+  end)
+end)
+

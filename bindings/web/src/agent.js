@@ -61,6 +61,28 @@ export class Agent {
     return rt.heap.u32[out >> 2];
   }
 
+  /**
+   * A demonstrated step (docs/teaching.md): as update, but the player or a scripted AI took `action`
+   * (0 .. actions - 1, one the mask allows); the agent learns from it and is pulled towards it.
+   */
+  updateDemonstrated(reward, observation, dt, action, mask) {
+    const h = this.live();
+    checkNumber('reward', reward);
+    const obs = checkObservation('observation', observation);
+    checkNumber('dt', dt);
+    if (!Number.isInteger(action) || action < 0 || action >= this.numActions) {
+      throw invalidArgument(`action must be an integer in 0..${this.numActions - 1}, got ${String(action)}`);
+    }
+    if (mask !== undefined) checkMask(mask, this.numActions);
+    const flags = mask === undefined ? 0 : mask.length;
+    const rt = this.rt;
+    const [d, c, m] = rt.carve([4 * obs.discrete.length, 4 * obs.continuous.length, Math.max(flags, 1)]);
+    writeObservation(rt.heap, obs, d, c);
+    for (let i = 0; i < flags; ++i) rt.heap.u8[m + i] = mask[i] ? 1 : 0;
+    rt.check(rt.m._verve_agent_update_demonstrated(h, reward, d, obs.discrete.length, c, obs.continuous.length, dt,
+      flags ? m : 0, flags, action));
+  }
+
   /** The trial really ended (goal, death): a terminal reward. */
   endEpisode(finalReward) {
     const h = this.live();

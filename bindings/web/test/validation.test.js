@@ -148,3 +148,18 @@ test('errors carry the result name and the library message', () => {
     assert.match(e.message, /^verve_agent_create: invalid agent descriptor: num_actions must be at least 1/);
   }
 });
+
+test('demonstrated steps: the action is checked, a refusal changes nothing, the policy follows', () => {
+  const agent = trained();
+  const ok = { discrete: [1], continuous: [0.1, 0.2] };
+  refused(agent, () => agent.updateDemonstrated(0, ok, 0.1, 3), undefined, /action must be an integer in 0..2/);
+  refused(agent, () => agent.updateDemonstrated(0, ok, 0.1, -1), undefined, /action/);
+  refused(agent, () => agent.updateDemonstrated(0, ok, 0.1, 1.5), undefined, /action/);
+  refused(agent, () => agent.updateDemonstrated(0, ok, 0.1, 0, [false, true, true]), undefined, /forbids/);
+  refused(agent, () => agent.updateDemonstrated(NaN, ok, 0.1, 0), undefined, /reward must be finite/);
+  for (let i = 0; i < 20; ++i) agent.updateDemonstrated(0, ok, 0.1, 2, [true, true, true]);
+  agent.update(0, ok, 0.1);
+  assert.ok(agent.actionProbabilities()[2] > 0.6, `p[2] = ${agent.actionProbabilities()[2]}`);
+  agent.dispose();
+});
+

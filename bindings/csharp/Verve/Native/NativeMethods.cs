@@ -50,6 +50,11 @@ namespace Verve.Native
             byte* actionMask, uint nActions, out uint action);
 
         [DllImport(Library, CallingConvention = CallingConvention.Cdecl)]
+        internal static extern ResultCode verve_agent_update_demonstrated(AgentHandle agent, float reward,
+            int* discrete, uint nDiscrete, float* continuous, uint nContinuous, float dt,
+            byte* actionMask, uint nActions, uint action);
+
+        [DllImport(Library, CallingConvention = CallingConvention.Cdecl)]
         internal static extern ResultCode verve_agent_end_episode(AgentHandle agent, float finalReward);
 
         [DllImport(Library, CallingConvention = CallingConvention.Cdecl)]
