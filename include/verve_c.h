@@ -243,6 +243,12 @@ VERVE_API verve_result VERVE_CALL verve_agent_update_masked(verve_agent* agent, 
 VERVE_API verve_result VERVE_CALL verve_agent_update_demonstrated(verve_agent* agent, float reward,
     const int32_t* discrete, uint32_t n_discrete, const float* continuous, uint32_t n_continuous,
     float dt, const uint8_t* action_mask, uint32_t n_actions, uint32_t action);
+/* A teacher's judgement (docs/teaching.md): praise in [-1, 1] (1 good, -1 bad) of what the agent did
+ * over the last 2.5 s, as a player's click arrives 0.2-2 s after the act it judges. It moves the
+ * actor's preferences for those acts and is not a reward. The agent remembers its acts from its first
+ * judgement on (praise 0 arms the memory without judging); the memory is not saved. NaN or praise
+ * outside [-1, 1] is refused and changes nothing. */
+VERVE_API verve_result VERVE_CALL verve_agent_teach(verve_agent* agent, float praise);
 /* Ends a trial that really ended (goal reached, NPC died): final_reward is learned as the last
  * reward there is, nothing is expected after it. */
 VERVE_API verve_result VERVE_CALL verve_agent_end_episode(verve_agent* agent, float final_reward);

@@ -83,6 +83,12 @@ public:
     // short-term memory is cleared. The predictive model learns nothing from it (no next state).
     void truncateEpisode(float reward);
 
+    // A teacher's judgement (docs/teaching.md): `praise` in [-1, 1], 1 good, -1 bad, of what the agent
+    // did over the last 2.5 s (a person reacts 0.2-2 s after the act they judge). It moves the
+    // actor's preferences for those acts; it is not a reward. The agent remembers its acts from
+    // its first judgement on (praise 0 arms the memory without judging); the memory is not saved.
+    void teach(float praise);
+
     // Forgets the previous step and all eligibility traces; keeps everything learned.
     void resetShortTermMemory();
 

@@ -83,6 +83,13 @@ VERVE_API verve_result VERVE_CALL verve_agent_update_demonstrated(verve_agent* a
     });
 }
 
+VERVE_API verve_result VERVE_CALL verve_agent_teach(verve_agent* agent, float praise) {
+    return guarded(__func__, [&] {
+        const AgentUse use(agent);
+        use.agent().teach(praise);
+    });
+}
+
 VERVE_API verve_result VERVE_CALL verve_agent_end_episode(verve_agent* agent, float final_reward) {
     return guarded(__func__, [&] {
         const AgentUse use(agent);

@@ -195,6 +195,7 @@ void Agent::Impl::reserveFor(std::uint32_t features, std::size_t active) {
     core::reserveRoom(probabilities, td.traceStride());  // a restore may have left it numActions
     td.reserve(features, active);
     if (desc.planning) planner.reserve(features);
+    if (teacher.armed()) teacher.reserve(active);
 }
 
 float Agent::Impl::learnedReward(float reward, bool final) {
@@ -308,6 +309,7 @@ std::uint32_t Agent::Impl::step(float reward, ObservationView obs, float dt, Act
         if (s.learning) core::imitate(s.weights, s.current, action, mask.allowed, k.rates.policy, k.rates.policyBound);
     }
     if (s.learning && s.learnsFromRealSteps()) s.td.mark(s.current, action, s.rep.featureCount());
+    if (s.teacher.armed()) s.teacher.remember(dt, action, s.current);
 
     std::swap(s.previous, s.current);
     s.previousAction = action;
@@ -351,6 +353,19 @@ void Agent::truncateEpisode(float reward) {
     }
     s.endTrial();
     s.resetShortTermMemory();
+}
+
+void Agent::teach(float praise) {
+    Impl& s = *impl_;
+    core::checkFinite(praise, "praise");
+    if (praise < -1.0f || praise > 1.0f) {
+        throw Error(ErrorCode::InvalidArgument, "praise must be within [-1, 1] (1: good, -1: bad), got " + std::to_string(praise));
+    }
+    if (s.learning && praise != 0.0f) {
+        const StepConstants k = s.constantsFor(s.lastDt);
+        s.teacher.credit(s.weights, praise, k.rates.policy, k.rates.policyBound);
+    }
+    s.teacher.arm();  // after the credit: a refused or failed call changes nothing
 }
 
 void Agent::resetShortTermMemory() { impl_->resetShortTermMemory(); }

@@ -12,6 +12,7 @@
 #include "core/rng.hpp"
 #include "core/state_representation.hpp"
 #include "core/td_learner.hpp"
+#include "core/teacher.hpp"
 #include "core/weight_table.hpp"
 #include "verve/agent.hpp"
 
@@ -115,6 +116,9 @@ struct Agent::Impl {
     // share as few cache lines as they can (a crowd's update misses each line it touches).
     core::PredictiveModel model;
     core::Planner planner;
+    // What the agent did over the last seconds, for a teacher's judgements (Agent::teach); cold until
+    // the first one.
+    core::TeacherMemory teacher;
 };
 
 core::WeightLayout weightLayoutFor(const AgentDescriptor& desc);

@@ -198,6 +198,32 @@ TEST_F(CApi, DemonstratedStepsAreValidatedAndPullThePolicyTowardsTheirAction) {
     EXPECT_GT(p[2], 0.75f) << p[0] << " " << p[1];  // uniform: 1/3; 0.87 measured
 }
 
+TEST_F(CApi, PraiseIsValidatedAndMovesThePolicyForTheActsBeforeIt) {
+    const std::string before = saved();
+    expectRefusedUnchanged(VERVE_ERROR_INVALID_ARGUMENT, verve_agent_teach(nullptr, 1.0f));
+    expectRefusedUnchanged(VERVE_ERROR_INVALID_ARGUMENT, verve_agent_teach(agent_, kNaN));
+    expectRefusedUnchanged(VERVE_ERROR_INVALID_ARGUMENT, verve_agent_teach(agent_, 1.5f));
+    EXPECT_NE(lastError().find("[-1, 1]"), std::string::npos) << lastError();
+    ASSERT_EQ(verve_agent_teach(agent_, 0.0f), VERVE_OK);  // arms the memory, judges nothing
+    EXPECT_EQ(saved(), before);
+
+    // An answer at one state, then half a second elsewhere, then the judgement: praised when the
+    // answer was action 1, scolded otherwise.
+    int32_t d = 1, elsewhere = 0;
+    float c = -0.4f, far = 0.9f;
+    uint32_t action = 0, answer = 0;
+    for (int i = 0; i < 40; ++i) {
+        ASSERT_EQ(verve_agent_update(agent_, 0.0f, &d, 1, &c, 1, 0.1f, &answer), VERVE_OK);
+        for (int k = 0; k < 5; ++k) ASSERT_EQ(verve_agent_update(agent_, 0.0f, &elsewhere, 1, &far, 1, 0.1f, &action), VERVE_OK);
+        ASSERT_EQ(verve_agent_teach(agent_, answer == 1 ? 1.0f : -1.0f), VERVE_OK) << verve_last_error();
+        for (int k = 0; k < 20; ++k) ASSERT_EQ(verve_agent_update(agent_, 0.0f, &elsewhere, 1, &far, 1, 0.1f, &action), VERVE_OK);
+    }
+    ASSERT_EQ(verve_agent_update(agent_, 0.0f, &d, 1, &c, 1, 0.1f, &action), VERVE_OK);
+    float p[3] = {0, 0, 0};
+    ASSERT_EQ(verve_agent_get_action_probabilities(agent_, p, 3), VERVE_OK);
+    EXPECT_GT(p[1], 0.75f) << p[0] << " " << p[2];
+}
+
 TEST_F(CApi, PolicyReadOutsGreedyModeMasksAndTruncation) {
     float p[3] = {0, 0, 0};
     ASSERT_EQ(verve_agent_get_action_probabilities(agent_, p, 3), VERVE_OK) << verve_last_error();

@@ -64,7 +64,7 @@ extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size) {
         const Visible before = visible(agent);
         verve_result r = VERVE_OK;
         bool changes = false;  // a successful call of this kind may change what visible() reports
-        switch (in.ConsumeIntegralInRange<int>(0, 16)) {
+        switch (in.ConsumeIntegralInRange<int>(0, 17)) {
             case 0:
             case 1:
             case 2: {
@@ -154,6 +154,10 @@ extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size) {
                 changes = true;
                 break;
             }
+            case 17:  // a teacher's judgement of the acts before it (NaN and beyond [-1, 1] refused)
+                r = verve_agent_teach(agent, anyFloat(in, -1.5f, 1.5f));
+                changes = true;
+                break;
             case 13:
                 r = verve_agent_truncate_episode(agent, anyFloat(in, -1.5f, 1.5f));
                 changes = true;

@@ -1,4 +1,4 @@
-// Allocation failure: a fixed scenario (create, 120 updates, a quarter of them demonstrated, with RBF growth, planning and an
+// Allocation failure: a fixed scenario (create, 120 updates, a quarter of them demonstrated, a teacher's judgements, with RBF growth, planning and an
 // episode end, an XML save and load, then a binary save and load) runs once for every N, with the N-th allocation failing. The
 // call that meets the failure must return VERVE_ERROR_OUT_OF_MEMORY and leave the agent exactly
 // as it was (its save byte-identical), and the scenario, retried from there, must end in the same
@@ -38,6 +38,8 @@ public:
         if (i == 0) return verve_agent_create(&desc_, &agent_);
         if (i <= 120) {
             if (i == 60) return verve_agent_end_episode(agent_, 1.0f);
+            if (i == 2) return verve_agent_teach(agent_, 0.0f);  // the teacher's memory, from here on
+            if (i % 10 == 5) return verve_agent_teach(agent_, i % 20 == 5 ? 1.0f : -0.5f);
             const int32_t disc = i % 3;
             const float c[2] = {std::sin(0.9f * static_cast<float>(i)), std::cos(0.4f * static_cast<float>(i))};
             uint32_t action = 0;

@@ -1,0 +1,64 @@
+// A teacher's praise and scolding (docs/teaching.md): a player clicks "good" or "bad" some time
+// after the act they judge (people take 0.2-2 s to react), so a judgement cannot go to the latest
+// step alone. The agent remembers what it did over the last kWindowSeconds (the state's features
+// and the action, per update) and a judgement moves the actor's preference for each remembered act
+// by rate * praise * activation: a feature's act counted once however many updates repeated it
+// (the largest activation, as a replacing trace), so that a judgement weighs the same at 10 or 60
+// updates a second. Acts the teacher did not mean share the credit, but they are as often praised
+// as scolded and cancel out over many judgements, while the judged act's credit adds up (Knox and
+// Stone's TAMER assigns credit over a window in the same way). Praise is not a reward: the critic
+// never sees it, so the game's own rewards and values stay as they are.
+//
+// Remembering costs a copy of the active features per update, so an agent starts remembering at its
+// first judgement (praise 0 arms it without judging) and keeps doing so; the memory is not saved.
+#pragma once
+#include <cstddef>
+#include <cstdint>
+#include <vector>
+
+#include "core/active_feature.hpp"
+#include "core/weight_table.hpp"
+
+namespace verve::core {
+
+class TeacherMemory {
+public:
+    static constexpr double kWindowSeconds = 2.5;
+    // Acts kept at most (at 60 updates a second the window holds 150); older ones are forgotten.
+    static constexpr std::size_t kMaxActs = 1024;
+
+    bool armed() const { return armed_; }
+    void arm() { armed_ = true; }
+    // Room for remember() with `features` active features: it then allocates nothing.
+    void reserve(std::size_t features);
+    // The act chosen `dt` seconds after the previous one: `action` at the features `phi`.
+    void remember(float dt, std::uint32_t action, const std::vector<ActiveFeature>& phi) noexcept;
+    // Moves the remembered acts' preferences by rate * praise * activation (within +-bound when bound
+    // > 0). Allocates its scratch before changing any weight.
+    void credit(WeightTable& w, float praise, float rate, float bound);
+    std::size_t acts() const { return acts_.size() - first_; }
+
+private:
+    struct Act {
+        double time;
+        std::uint32_t action;
+        std::uint32_t begin;  // into pool_
+        std::uint32_t count;
+    };
+    struct Credit {
+        std::uint32_t feature;
+        std::uint32_t action;
+        float activation;
+    };
+    void forgetBefore(double time) noexcept;
+    void compact() noexcept;
+
+    bool armed_ = false;
+    double clock_ = 0.0;  // seconds of remembered updates
+    std::vector<Act> acts_;  // acts_[first_..] are remembered, oldest first
+    std::size_t first_ = 0;
+    std::vector<ActiveFeature> pool_;  // their features; pool_[acts_[first_].begin..] in use
+    std::vector<Credit> scratch_;
+};
+
+}  // namespace verve::core
