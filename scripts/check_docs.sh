@@ -50,6 +50,7 @@ ctest_doc README.md 'ctest --preset known-gaps'
 ctest_doc README.md 'ctest --test-dir build -L known_gap'
 
 doc docs/teaching.md "build/tests/learning/verve_learning_tests --gtest_filter='DemonstrationLearning.*'"
+doc docs/teaching.md "build/tests/learning/verve_learning_tests --gtest_filter='TeacherLearning.*'"
 doc docs/lua.md 'cmake -S . -B build -DCMAKE_BUILD_TYPE=Release'
 doc docs/lua.md 'cmake --build build -j2'
 ctest_doc docs/lua.md "ctest --test-dir build -R '^lua\.'"

@@ -105,6 +105,8 @@ export class Agent {
   /** A step the player or a scripted AI took (docs/teaching.md): `action` is learned from as the agent's own. */
   updateDemonstrated(reward: number, observation: Observation | null | undefined, dt: number, action: number,
     mask?: ArrayLike<boolean | 0 | 1>): void;
+  /** A teacher's judgement in [-1, 1] of what the agent did over the last 2.5 s (docs/teaching.md); not a reward. */
+  teach(praise: number): void;
   endEpisode(finalReward: number): void;
   truncateEpisode(reward: number): void;
   resetShortTermMemory(): void;

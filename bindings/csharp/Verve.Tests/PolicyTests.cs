@@ -82,6 +82,25 @@ namespace Verve.Tests
         }
 
         [Fact]
+        public void PraiseOfARecentAnswerBecomesThePolicysAndBadPraiseIsRefused()
+        {
+            using var agent = new Agent(new AgentOptions { Actions = 3, PolicyMultiplier = 1f, Seed = 5 }.AddDiscreteSensor(3));
+            int[] cue = { 0 }, idle = { 2 };
+            agent.Teach(0f);
+            for (int t = 0; t < 40; t++)
+            {
+                int answer = agent.Update(0f, cue, null, 0.1f);
+                for (int k = 0; k < 5; k++) agent.Update(0f, idle, null, 0.1f);
+                agent.Teach(answer == 1 ? 1f : -1f);
+                for (int k = 0; k < 20; k++) agent.Update(0f, idle, null, 0.1f);
+            }
+            agent.Update(0f, cue, null, 0.1f);
+            Assert.True(agent.ActionProbabilities[1] > 0.6f, $"p[1] = {agent.ActionProbabilities[1]}");
+            Assert.Throws<VerveException>(() => agent.Teach(1.5f));
+            Assert.Throws<VerveException>(() => agent.Teach(float.NaN));
+        }
+
+        [Fact]
         public void TruncationBootstrapsFromTheLastState()
         {
             using var agent = Cue();

@@ -108,6 +108,12 @@ namespace Verve
             }
         }
 
+        /// <summary>A teacher's judgement (docs/teaching.md): <paramref name="praise"/> in [-1, 1] (1 good, -1 bad) of
+        /// what the agent did over the last 2.5 s; it moves the actor's preferences for those acts and is not a reward.
+        /// The agent remembers its acts from its first judgement on (0 arms the memory without judging); not saved.</summary>
+        /// <exception cref="VerveException">NaN or praise outside [-1, 1].</exception>
+        public void Teach(float praise) => VerveException.ThrowIfFailed(NativeMethods.verve_agent_teach(Handle, praise));
+
         /// <summary>Ends a trial that really ended (goal reached, NPC died): <paramref name="finalReward"/> is the
         /// last reward there is; nothing is expected after it.</summary>
         public void EndEpisode(float finalReward) =>

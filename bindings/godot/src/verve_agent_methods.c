@@ -147,6 +147,15 @@ VG_METHOD(update_demonstrated) {
     return vg_step(user_data, "update_demonstrated", argc, argv, VG_DEMONSTRATED);
 }
 
+VG_METHOD(teach) {
+    vg_call c;
+    verve_agent* a;
+    float praise = 0.0f;
+    VG_UNUSED;
+    return vg_variant_bool(vg_begin(&c, user_data, "teach", argc, argv, 1, 1) && vg_agent_handle(&c, &a) &&
+                           vg_arg_float(&c, 0, "praise", &praise) && vg_check(&c, verve_agent_teach(a, praise)));
+}
+
 VG_METHOD(end_episode) {
     vg_call c;
     verve_agent* a;

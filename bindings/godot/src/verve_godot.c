@@ -62,6 +62,11 @@ static const vg_method_info vg_agent_methods[] = {
       {"continuous", GODOT_VARIANT_TYPE_POOL_REAL_ARRAY},
       {"dt", GODOT_VARIANT_TYPE_REAL},
       {"action", GODOT_VARIANT_TYPE_INT}}},
+    {"teach", vg_teach,
+     "A teacher's judgement in [-1, 1] (1 good, -1 bad) of what the agent did over the last 2.5 s; not a reward. "
+     "The agent remembers its acts from its first judgement on (0 arms it). -> bool",
+     1,
+     {{"praise", GODOT_VARIANT_TYPE_REAL}}},
     {"end_episode", vg_end_episode, "Ends a trial with its final reward. -> bool", 1,
      {{"final_reward", GODOT_VARIANT_TYPE_REAL}}},
     {"truncate_episode", vg_truncate_episode,

@@ -150,6 +150,8 @@ func test_episode_learning_readouts():
 	check_error(a, a.update_demonstrated(0.0, [2], [0.5, 0.5], 0.1, 3), false, "out of range", "a demonstrated action out of range")
 	check_error(a, a.update_demonstrated(0.0, [2], [0.5, 0.5], 0.1, -1), false, "action must be 0 .. actions-1", "a negative demonstrated action")
 	check_error(a, a.update_demonstrated(0.0, [2], [0.5, 0.5], 0.1, 1.5), false, "action must be an int", "a demonstrated action that is not an int")
+	check(a.teach(0.0) and a.teach(1.0), "a teacher's judgements")
+	check_error(a, a.teach(1.5), false, "[-1, 1]", "praise beyond [-1, 1]")
 	a.greedy = "yes"
 	check("greedy must be a bool" in a.get_last_error() and a.greedy == true, "greedy takes bools only")
 	a.greedy = false

@@ -476,6 +476,13 @@ static int lv_update_demonstrated(lua_State* L) {
     return 0;
 }
 
+static int lv_teach(lua_State* L) {
+    float praise = lv_to_float(luaL_checknumber(L, 2));
+    verve_result r = verve_agent_teach(lv_open_agent(L), praise);
+    if (r != VERVE_OK) return lv_fail(L, "teach", r);
+    return 0;
+}
+
 static int lv_end_episode(lua_State* L) {
     float reward = lv_to_float(luaL_checknumber(L, 2));
     verve_result r = verve_agent_end_episode(lv_open_agent(L), reward);
@@ -991,6 +998,7 @@ static const luaL_Reg lv_batch_meta[] = {
 static const luaL_Reg lv_agent_methods[] = {
     {"update", lv_update},
     {"update_demonstrated", lv_update_demonstrated},
+    {"teach", lv_teach},
     {"end_episode", lv_end_episode},
     {"truncate_episode", lv_truncate_episode},
     {"set_action_selection", lv_set_action_selection},

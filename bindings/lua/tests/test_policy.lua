@@ -80,3 +80,18 @@ T.check("update_demonstrated(): the shown action becomes the policy's; bad actio
   end)
 end)
 
+T.check("teach(): praise of an answer a moment ago makes it the policy's; bad praise is refused", function()
+  local agent = verve.agent(T.desc(CUE, { discrete = { 3 } }))
+  agent:teach(0) -- the pet starts remembering its acts
+  for _ = 1, 40 do
+    local answer = agent:update(0, { discrete = { 1 } }, 0.1)
+    for _ = 1, 5 do agent:update(0, { discrete = { 3 } }, 0.1) end
+    agent:teach(answer == 2 and 1 or -1)
+    for _ = 1, 20 do agent:update(0, { discrete = { 3 } }, 0.1) end
+  end
+  agent:update(0, { discrete = { 1 } }, 0.1)
+  assert(agent:action_probabilities()[2] > 0.6, "p[2] = " .. agent:action_probabilities()[2])
+  T.expect_library_error("teach", function() agent:teach(1.5) end)
+  T.expect_library_error("teach", function() agent:teach(0 / 0) end)
+end)
+

@@ -83,6 +83,12 @@ export class Agent {
       flags ? m : 0, flags, action));
   }
 
+  /** A teacher's judgement in [-1, 1] of what the agent did over the last 2.5 s (docs/teaching.md); not a reward. */
+  teach(praise) {
+    const h = this.live();
+    this.rt.check(this.rt.m._verve_agent_teach(h, checkNumber('praise', praise)));
+  }
+
   /** The trial really ended (goal, death): a terminal reward. */
   endEpisode(finalReward) {
     const h = this.live();

@@ -163,3 +163,13 @@ test('demonstrated steps: the action is checked, a refusal changes nothing, the 
   agent.dispose();
 });
 
+test('a teacher\'s judgement: NaN and praise beyond [-1, 1] are refused and change nothing', () => {
+  const agent = trained();
+  refused(agent, () => agent.teach(NaN), undefined, /praise/);
+  refused(agent, () => agent.teach(1.5), undefined, /\[-1, 1\]/);
+  refused(agent, () => agent.teach('1'), undefined, /praise/);
+  agent.teach(0);
+  agent.teach(-1);
+  agent.dispose();
+});
+

@@ -55,6 +55,9 @@ namespace Verve.Native
             byte* actionMask, uint nActions, uint action);
 
         [DllImport(Library, CallingConvention = CallingConvention.Cdecl)]
+        internal static extern ResultCode verve_agent_teach(AgentHandle agent, float praise);
+
+        [DllImport(Library, CallingConvention = CallingConvention.Cdecl)]
         internal static extern ResultCode verve_agent_end_episode(AgentHandle agent, float finalReward);
 
         [DllImport(Library, CallingConvention = CallingConvention.Cdecl)]
