@@ -142,7 +142,9 @@ typedef struct verve_agent_desc {
 #define VERVE_ADAPT_HORIZON 1u      /* the discount horizon follows how long trials last; tau_discount
                                        is then its shortest */
 #define VERVE_ADAPT_ACTOR_SCALE 2u  /* the actor's steps stay reward-sized when TD errors grow */
-#define VERVE_ADAPT_ALL 3u
+#define VERVE_ADAPT_DECISION_RATE 4u /* an update less than 0.1 s after the previous one learns as much
+                                        as a 0.1 s decision (learning rates, trace decay) */
+#define VERVE_ADAPT_ALL 7u
 
 /* The sizes of verve_agent_desc a library accepts in struct_size: each release's full struct.
  * V1 ended after `seed` (no planning fields); V2 after discrete_prediction; V3 after

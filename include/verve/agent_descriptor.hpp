@@ -30,7 +30,11 @@ struct Adaptation {
     static constexpr std::uint32_t Horizon = 1u << 0;
     // The actor's steps stay reward-sized when TD errors grow with a long horizon.
     static constexpr std::uint32_t ActorScale = 1u << 1;
-    static constexpr std::uint32_t All = Horizon | ActorScale;
+    // An update less than 0.1 s after the previous one learns as much as a 0.1 s decision (its
+    // learning rates and trace decay), so hosts calling 50-60 times a second learn as fast per
+    // decision as the thesis's 10 decisions a second (core/decision_rate.hpp).
+    static constexpr std::uint32_t DecisionRate = 1u << 2;
+    static constexpr std::uint32_t All = Horizon | ActorScale | DecisionRate;
 };
 
 // Bounds on every size an agent derives from its descriptor, so that no descriptor or save can ask

@@ -4,6 +4,7 @@
 #include <utility>
 
 #include "core/agent_impl.hpp"
+#include "core/decision_rate.hpp"
 #include "core/demonstration.hpp"
 #include "core/observation_check.hpp"
 #include "core/prefetch.hpp"
@@ -75,9 +76,11 @@ void Agent::Impl::learnReal(float delta, const StepConstants& k, float decay) {
 
 StepConstants Agent::Impl::constantsFor(float dt) const {
     StepConstants k;
+    // Adaptation::DecisionRate: an update learns at least as much as a 0.1 s decision (core/decision_rate.hpp).
+    const float seconds = (desc.adaptation & Adaptation::DecisionRate) != 0 ? core::DecisionRate::learningSeconds(dt) : dt;
     k.gamma = decayFromTimeConstant(dt, tauDiscount(dt));
-    k.traceDecay = k.gamma * decayFromTimeConstant(dt, desc.tauEligibility);
-    k.rates.value = rateFromTimeConstant(dt, desc.tauValue) / rep.activationSum();
+    k.traceDecay = k.gamma * decayFromTimeConstant(seconds, desc.tauEligibility);
+    k.rates.value = rateFromTimeConstant(seconds, desc.tauValue) / rep.activationSum();
     k.rates.policy = desc.policyMultiplier * k.rates.value;
     if ((desc.adaptation & Adaptation::ActorScale) != 0) k.rates.policy *= brain->tdScale.actorFactor();
     k.rates.policyBound = desc.policyWeightBound;

@@ -72,6 +72,30 @@ TEST(TdLearning, OneUpdateComputedByHand) {
     EXPECT_NEAR(snap.weights[3], eta * delta, 1e-6f);                     // s1's trace is fresh
 }
 
+// Adaptation::DecisionRate (core/decision_rate.hpp): an update 0.02 s after the previous one learns
+// with the rates and trace decay of a 0.1 s decision; discounting stays in real seconds.
+TEST(TdLearning, UpdatesCloserThanATenthOfASecondLearnAsATenthOfASecond) {
+    for (const bool decisions : {true, false}) {
+        AgentDescriptor d = twoStateAgent();
+        d.adaptation = decisions ? Adaptation::All : Adaptation::All & ~Adaptation::DecisionRate;
+        Agent agent(d);
+        const std::uint32_t a1 = agent.update(0.0f, discreteObs(0), 0.02f);
+        agent.update(1.0f, discreteObs(1), 0.02f);
+        const float seconds = decisions ? 0.1f : 0.02f;
+        const float eta = 1.0f - std::exp(-seconds / 0.1f);
+        AgentSnapshot snap = agent.snapshot();
+        EXPECT_NEAR(snap.weights[0], eta, 1e-6f) << decisions;
+        EXPECT_NEAR(snap.weights[1 + a1], eta, 1e-6f) << decisions;
+
+        agent.update(0.0f, discreteObs(0), 0.02f);
+        const float delta = std::exp(-0.02f) * eta;  // gamma over the real 0.02 s
+        EXPECT_NEAR(agent.tdError(), delta, 1e-6f) << decisions;
+        const float traceDecay = std::exp(-0.02f) * std::exp(-seconds / 0.1f);
+        snap = agent.snapshot();
+        EXPECT_NEAR(snap.weights[0], eta + eta * delta * traceDecay, 1e-6f) << decisions;
+    }
+}
+
 TEST(TdLearning, EndEpisodeIsTerminalAndForgetsTheStep) {
     Agent agent(twoStateAgent());
     agent.update(0.0f, discreteObs(0), 0.1f);

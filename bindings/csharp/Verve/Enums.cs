@@ -21,8 +21,10 @@ namespace Verve
         Horizon = 1,
         /// <summary>The actor's steps stay reward-sized when TD errors grow with a long horizon.</summary>
         ActorScale = 2,
-        /// <summary>Both (the default).</summary>
-        All = Horizon | ActorScale,
+        /// <summary>An update less than 0.1 s after the previous one learns as much as a 0.1 s decision.</summary>
+        DecisionRate = 4,
+        /// <summary>All of them (the default).</summary>
+        All = Horizon | ActorScale | DecisionRate,
     }
 
     /// <summary>Intrinsic reward added during planning (<c>verve_curiosity</c>).</summary>
