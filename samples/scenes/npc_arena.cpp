@@ -137,10 +137,25 @@ void NpcArena::observe(std::size_t npc, Observation& out) const {
                            static_cast<float>(2.0 * std::hypot(to.x, to.z) / diagonal - 1.0)});
 }
 
+std::uint32_t NpcArena::scriptedAction(const Observation& obs) {
+    constexpr float kAligned = 0.15f;  // of pi: about 27 degrees
+    const float bearing = obs.continuous.at(0);  // positive toward a left turn
+    if (bearing > kAligned) return TurnLeft;
+    if (bearing < -kAligned) return TurnRight;
+    return Forward;
+}
+
 void NpcArena::step() {
     for (std::size_t i = 0; i < agents_.size(); ++i) {
         observe(i, scratch_);
-        actions_[i] = agents_[i].update(rewards_[i], scratch_, config_.agentStep);
+        if (driver_ == Driver::Agents) {
+            actions_[i] = agents_[i].update(rewards_[i], scratch_, config_.agentStep);
+        } else {
+            actions_[i] = scriptedAction(scratch_);
+            if (driver_ == Driver::ScriptDemonstrates) {
+                agents_[i].updateDemonstrated(rewards_[i], scratch_.view(), config_.agentStep, actions_[i]);
+            }
+        }
     }
     // Full thrust or torque balances the drag at the configured speed or turn rate.
     const btScalar thrust = static_cast<btScalar>(kMass * dragRate() * config_.speed);

@@ -55,6 +55,14 @@ public:
 
     static AgentDescriptor defaultDescriptor();
 
+    // Who drives the NPCs: their agents (the default); the designer's scripted steering, with the
+    // agents learning from it as demonstrations (docs/teaching.md); or the script alone.
+    enum class Driver { Agents, ScriptDemonstrates, Script };
+    void setDriver(Driver driver) { driver_ = driver; }
+    // A designer's steering, as a game would script it: turn away from the hazard ahead, turn toward
+    // the food until it lies within about 27 degrees of the heading, then walk.
+    static std::uint32_t scriptedAction(const Observation& obs);
+
     // One agent step for every NPC: sense, decide, push, simulate, reward.
     void step();
     // Steps for `seconds` of simulated time and returns what happened in it.
@@ -88,6 +96,7 @@ private:
     Observation scratch_;
     double time_ = 0.0;
     ArenaStats totals_;
+    Driver driver_ = Driver::Agents;
 };
 
 }  // namespace verve::scenes

@@ -2,6 +2,8 @@
 // are in docs/experiments.md (verve-demo). Deterministic: a seed fixes every number below.
 #include <gtest/gtest.h>
 
+#include <algorithm>
+
 #include "cart_pole_scene.hpp"
 #include "npc_arena.hpp"
 #include "pendulum_scene.hpp"
@@ -135,4 +137,59 @@ TEST(NpcArena, SharedBrainBodiesShareWeights) {
         EXPECT_EQ(arena.agent(i).rbfCount(), arena.agent(0).rbfCount());
         EXPECT_EQ(arena.agent(i).snapshot().weights, arena.agent(0).snapshot().weights);
     }
+}
+
+// Bootstrapping from a designer's AI (docs/teaching.md): the script chases the nearest food and
+// ignores the hazard, as a designer's first AI would. NPCs that watch it for 2 minutes
+// (demonstrated steps), then act on their own, are measured on minutes 6-10 against the script and
+// against NPCs that learned from scratch for as long. Score: the game's reward per NPC-minute
+// (+1 a food, -1 every 0.1 s in the hazard).
+namespace {
+struct BootstrapResult {
+    double script = 0, scriptFood = 0, boot = 0, bootFood = 0, scratch = 0, scratchFood = 0;
+    double worstMargin = 0;  // the bootstrapped NPCs' reward minus the script's, on the worst seed
+};
+double score(const ArenaStats& s) { return s.foodPerNpcMinute() - 600.0 * s.hazardFraction(); }
+BootstrapResult bootstrapRuns(std::uint64_t seeds) {
+    BootstrapResult r;
+    r.worstMargin = 1e9;
+    for (std::uint64_t seed = 1; seed <= seeds; ++seed) {
+        NpcArena script(NpcArenaConfig{}, seed);
+        script.setDriver(NpcArena::Driver::Script);
+        const ArenaStats s = script.run(300.0);
+        NpcArena boot(NpcArenaConfig{}, seed);
+        boot.setDriver(NpcArena::Driver::ScriptDemonstrates);
+        boot.run(120.0);
+        boot.setDriver(NpcArena::Driver::Agents);
+        boot.run(180.0);
+        const ArenaStats b = boot.run(300.0);
+        NpcArena scratch(NpcArenaConfig{}, seed);
+        scratch.run(300.0);
+        const ArenaStats a = scratch.run(300.0);
+        const double n = static_cast<double>(seeds);
+        r.script += score(s) / n;
+        r.scriptFood += s.foodPerNpcMinute() / n;
+        r.boot += score(b) / n;
+        r.bootFood += b.foodPerNpcMinute() / n;
+        r.scratch += score(a) / n;
+        r.scratchFood += a.foodPerNpcMinute() / n;
+        r.worstMargin = std::min(r.worstMargin, score(b) - score(s));
+        std::printf("seed %llu: script %.2f (food %.2f), bootstrapped %.2f (food %.2f), scratch %.2f (food %.2f)\n",
+                    static_cast<unsigned long long>(seed), score(s), s.foodPerNpcMinute(), score(b), b.foodPerNpcMinute(),
+                    score(a), a.foodPerNpcMinute());
+    }
+    return r;
+}
+}  // namespace
+
+// Measured (seeds 1-6): reward per NPC-minute, script -26.30, bootstrapped -9.24 (better on every
+// seed, by 5.8 to 26.4), from scratch -11.51; food per NPC-minute 8.19, 7.43 and 2.60.
+TEST(NpcArenaLearning, BootstrappedFromTheScriptNpcsBeatIt) {
+    const BootstrapResult r = bootstrapRuns(6);
+    EXPECT_GT(r.boot, r.script + 8.0);
+    EXPECT_GT(r.bootFood, 2.0 * r.scratchFood);
+    EXPECT_GT(r.worstMargin, 0.0);
+    std::printf("reward per NPC-minute, minutes 6-10, seeds 1-6: script %.2f, bootstrapped %.2f, from scratch %.2f\n"
+                "food per NPC-minute: script %.2f, bootstrapped %.2f, from scratch %.2f\n",
+                r.script, r.boot, r.scratch, r.scriptFood, r.bootFood, r.scratchFood);
 }
