@@ -98,6 +98,7 @@ typedef enum verve_sensor_kind {
 typedef struct verve_agent verve_agent; /* opaque */
 typedef struct verve_brain verve_brain; /* opaque: a learner shared by many bodies (agents) */
 typedef struct verve_batch verve_batch; /* opaque: updates many agents in one call */
+typedef struct verve_recording verve_recording; /* opaque: demonstrated steps kept for replay */
 
 typedef struct verve_agent_desc {
     uint32_t struct_size; /* sizeof(verve_agent_desc), set by verve_agent_desc_default */
@@ -362,6 +363,32 @@ VERVE_API verve_result VERVE_CALL verve_batch_update(verve_batch* batch, verve_a
     const int32_t* discrete, const uint32_t* discrete_offsets, uint32_t discrete_total,
     const float* continuous, const uint32_t* continuous_offsets, uint32_t continuous_total,
     float dt, uint32_t* out_actions, verve_result* out_results);
+
+/* Recordings (docs/teaching.md, "Recordings"): demonstrated steps kept in memory or in a file
+ * (checksummed, versioned, bounded like a save) and replayed into an agent to train it before it
+ * ships. A recording has an agent's sensors and actions; every entry is checked as it is added (a
+ * refused one is not recorded) and again when a file is loaded. One thread at a time per recording
+ * (a second is refused with VERVE_ERROR_INVALID_STATE). */
+VERVE_API verve_result VERVE_CALL verve_recording_create(const verve_agent* shaped_like, verve_recording** out);
+VERVE_API void VERVE_CALL verve_recording_destroy(verve_recording* recording); /* NULL is ignored */
+/* As verve_agent_update_demonstrated takes them (no mask), verve_agent_end_episode and
+ * verve_agent_truncate_episode. At most 2^26 entries (VERVE_ERROR_INVALID_STATE beyond). */
+VERVE_API verve_result VERVE_CALL verve_recording_add_step(verve_recording* recording, float reward,
+    const int32_t* discrete, uint32_t n_discrete, const float* continuous, uint32_t n_continuous,
+    float dt, uint32_t action);
+VERVE_API verve_result VERVE_CALL verve_recording_add_end_episode(verve_recording* recording, float final_reward);
+VERVE_API verve_result VERVE_CALL verve_recording_add_truncation(verve_recording* recording, float reward);
+/* Entries (steps and trial ends) so far. */
+VERVE_API verve_result VERVE_CALL verve_recording_get_size(const verve_recording* recording, uint64_t* out_entries);
+VERVE_API verve_result VERVE_CALL verve_recording_save(const verve_recording* recording, const char* path);
+/* The two-call pattern of verve_agent_save_memory. */
+VERVE_API verve_result VERVE_CALL verve_recording_save_memory(const verve_recording* recording, void* buffer, size_t* size);
+VERVE_API verve_result VERVE_CALL verve_recording_load(const char* path, verve_recording** out);
+VERVE_API verve_result VERVE_CALL verve_recording_load_memory(const void* data, size_t size, verve_recording** out);
+/* Every entry into the agent, in order, as demonstrated steps and trial ends. The agent must have
+ * the recording's sensors and actions (else VERVE_ERROR_INVALID_ARGUMENT, nothing replayed); only
+ * running out of memory can stop a replay part-way, and the agent then keeps the entries before. */
+VERVE_API verve_result VERVE_CALL verve_agent_replay(verve_agent* agent, const verve_recording* recording);
 
 #ifdef __cplusplus
 }

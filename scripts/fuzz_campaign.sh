@@ -16,8 +16,8 @@ cd "$(dirname "$0")/.."
 seconds=${1:-3600}
 jobs=${2:-1}
 filter=${3:-.}
-targets=(fuzz_load_memory fuzz_load_file fuzz_calls fuzz_crowd fuzz_lua)
-seeds=(saves saves calls "" "")
+targets=(fuzz_load_memory fuzz_load_file fuzz_calls fuzz_crowd fuzz_lua fuzz_load_recording)
+seeds=(saves saves calls "" "" recordings)
 
 ./scripts/setup.sh --test
 cmake --preset fuzz >/dev/null

@@ -1,8 +1,9 @@
 // Writes the seed corpus of the load targets: a valid memory save of every kind of agent (discrete,
 // continuous, circular, full lattice, planning with each prediction, each curiosity, learning off),
 // as XML (<kind>.xml) and binary (<kind>.bin), each after a few updates so its RBFs, weights and model hold real values. Small on purpose:
-// libFuzzer mutates small inputs faster.
-//   verve_fuzz_corpus <dir>
+// libFuzzer mutates small inputs faster. With a second folder, the recording target's seeds too: the
+// same steps of some kinds, demonstrated and recorded (<kind>.vrec).
+//   verve_fuzz_corpus <dir> [<recordings dir>]
 #include <cstdio>
 #include <string>
 #include <vector>
@@ -43,11 +44,22 @@ bool writeSave(const verve_agent* agent, MemorySave save, const std::string& pat
     return std::fclose(f) == 0 && ok;
 }
 
+bool writeRecording(const verve_recording* recording, const std::string& path) {
+    size_t size = 0;
+    if (verve_recording_save_memory(recording, nullptr, &size) != VERVE_OK) return false;
+    std::vector<char> bytes(size);
+    if (verve_recording_save_memory(recording, bytes.data(), &size) != VERVE_OK) return false;
+    FILE* f = std::fopen(path.c_str(), "wb");
+    if (f == nullptr) return false;
+    const bool ok = std::fwrite(bytes.data(), 1, size, f) == size;
+    return std::fclose(f) == 0 && ok;
+}
+
 }  // namespace
 
 int main(int argc, char** argv) {
-    if (argc != 2) {
-        std::fprintf(stderr, "usage: %s <corpus dir>\n", argv[0]);
+    if (argc != 2 && argc != 3) {
+        std::fprintf(stderr, "usage: %s <corpus dir> [<recordings dir>]\n", argv[0]);
         return 2;
     }
     for (const Kind& kind : kKinds) {
@@ -61,6 +73,11 @@ int main(int argc, char** argv) {
             std::fprintf(stderr, "%s: %s\n", kind.name, verve_last_error());
             return 1;
         }
+        verve_recording* recording = nullptr;
+        if (argc == 3 && !d.planning && verve_recording_create(agent, &recording) != VERVE_OK) {
+            std::fprintf(stderr, "%s: %s\n", kind.name, verve_last_error());
+            return 1;
+        }
         uint32_t action = 0;
         for (int step = 0; step < 12; ++step) {
             const int32_t discrete[2] = {step % 2, step % 3};
@@ -69,6 +86,22 @@ int main(int argc, char** argv) {
             if (verve_agent_update(agent, reward, discrete, d.num_discrete_sensors, continuous, d.num_continuous_sensors,
                                    0.1f, &action) != VERVE_OK) {
                 std::fprintf(stderr, "%s: %s\n", kind.name, verve_last_error());
+                return 1;
+            }
+        }
+        if (recording != nullptr) {
+            for (int step = 0; step < 8; ++step) {
+                const int32_t discrete[2] = {step % 2, step % 3};
+                const float continuous[2] = {0.2f * static_cast<float>(step) - 0.7f, -0.4f};
+                verve_recording_add_step(recording, step % 3 == 2 ? 0.5f : 0.0f, discrete, d.num_discrete_sensors,
+                                         continuous, d.num_continuous_sensors, 0.1f, static_cast<uint32_t>(step) % d.num_actions);
+                if (step == 4) verve_recording_add_truncation(recording, -0.1f);
+            }
+            verve_recording_add_end_episode(recording, 1.0f);
+            const bool ok = writeRecording(recording, std::string(argv[2]) + "/" + kind.name + ".vrec");
+            verve_recording_destroy(recording);
+            if (!ok) {
+                std::fprintf(stderr, "%s: cannot write its recording\n", kind.name);
                 return 1;
             }
         }

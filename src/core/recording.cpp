@@ -1,0 +1,114 @@
+// verve::Recording: demonstrations kept for replay (include/verve/recording.hpp). Every entry is
+// checked as the agent would check it, when it is added (and when a file is loaded), so a replay
+// cannot be refused part-way.
+#include "verve/recording.hpp"
+
+#include <string>
+#include <utility>
+
+#include "core/observation_check.hpp"
+#include "core/weight_table.hpp"
+#include "verve/error.hpp"
+
+namespace verve {
+namespace {
+
+[[noreturn]] void refuse(const std::string& message) { throw Error(ErrorCode::InvalidArgument, message); }
+
+AgentDescriptor shapeOf(std::vector<std::uint32_t> discrete, std::uint32_t continuous, std::uint32_t actions) {
+    if (discrete.size() > DescriptorLimits::kMaxSensors || continuous > DescriptorLimits::kMaxSensors) {
+        refuse("a recording has at most " + std::to_string(DescriptorLimits::kMaxSensors) + " sensors of each kind");
+    }
+    for (std::uint32_t values : discrete) {
+        if (values == 0 || values > DescriptorLimits::kMaxDiscreteValues) refuse("a discrete sensor of a recording has no values or too many");
+    }
+    if (actions == 0 || actions > DescriptorLimits::kMaxActions) {
+        refuse("a recording's agents have 1 to " + std::to_string(DescriptorLimits::kMaxActions) + " actions, not " + std::to_string(actions));
+    }
+    AgentDescriptor d;
+    d.discreteSensors = std::move(discrete);
+    d.continuousSensors.resize(continuous);
+    d.numActions = actions;
+    return d;
+}
+
+}  // namespace
+
+Recording::Recording(std::vector<std::uint32_t> discreteSensors, std::uint32_t continuousSensors, std::uint32_t numActions)
+    : shape_(shapeOf(std::move(discreteSensors), continuousSensors, numActions)) {}
+
+Recording Recording::shapedLike(const AgentDescriptor& desc) {
+    return Recording(desc.discreteSensors, static_cast<std::uint32_t>(desc.continuousSensors.size()), desc.numActions);
+}
+
+void Recording::checkRoom() const {
+    if (kinds_.size() >= kMaxEntries) {
+        throw Error(ErrorCode::InvalidState, "the recording is full (" + std::to_string(kMaxEntries) + " entries): save it and start another");
+    }
+}
+
+void Recording::addStep(float reward, ObservationView obs, float dt, std::uint32_t action) {
+    core::checkObservation(shape_, obs);
+    core::checkFinite(reward, "reward");
+    core::checkTimeStep(dt);
+    core::checkDemonstratedAction(shape_, action, nullptr);
+    checkRoom();
+    // Room first: a failed allocation records nothing.
+    core::reserveRoom(kinds_, kinds_.size() + 1);
+    core::reserveRoom(rewards_, rewards_.size() + 1);
+    core::reserveRoom(dts_, dts_.size() + 1);
+    core::reserveRoom(actions_, actions_.size() + 1);
+    core::reserveRoom(discrete_, discrete_.size() + obs.numDiscrete);
+    core::reserveRoom(continuous_, continuous_.size() + obs.numContinuous);
+    kinds_.push_back(Kind::Step);
+    rewards_.push_back(reward);
+    dts_.push_back(dt);
+    actions_.push_back(action);
+    discrete_.insert(discrete_.end(), obs.discrete, obs.discrete + obs.numDiscrete);
+    continuous_.insert(continuous_.end(), obs.continuous, obs.continuous + obs.numContinuous);
+}
+
+void Recording::addEndEpisode(float finalReward) {
+    core::checkFinite(finalReward, "final reward");
+    checkRoom();
+    core::reserveRoom(kinds_, kinds_.size() + 1);
+    core::reserveRoom(rewards_, rewards_.size() + 1);
+    kinds_.push_back(Kind::EndEpisode);
+    rewards_.push_back(finalReward);
+}
+
+void Recording::addTruncation(float reward) {
+    core::checkFinite(reward, "reward");
+    checkRoom();
+    core::reserveRoom(kinds_, kinds_.size() + 1);
+    core::reserveRoom(rewards_, rewards_.size() + 1);
+    kinds_.push_back(Kind::Truncation);
+    rewards_.push_back(reward);
+}
+
+void Recording::replayInto(Agent& agent) const {
+    const AgentDescriptor& d = agent.descriptor();
+    if (d.discreteSensors != discreteSensors() || d.continuousSensors.size() != continuousSensors() || d.numActions != numActions()) {
+        refuse("the recording's sensors and actions (" + std::to_string(discreteSensors().size()) + " discrete, " +
+               std::to_string(continuousSensors()) + " continuous, " + std::to_string(numActions()) +
+               " actions) are not the agent's (" + std::to_string(d.discreteSensors.size()) + ", " +
+               std::to_string(d.continuousSensors.size()) + ", " + std::to_string(d.numActions) + ")");
+    }
+    const std::size_t nd = discreteSensors().size();
+    const std::size_t nc = continuousSensors();
+    std::size_t step = 0;
+    for (std::size_t i = 0; i < kinds_.size(); ++i) {
+        if (kinds_[i] == Kind::EndEpisode) {
+            agent.endEpisode(rewards_[i]);
+        } else if (kinds_[i] == Kind::Truncation) {
+            agent.truncateEpisode(rewards_[i]);
+        } else {
+            const ObservationView obs{nd ? discrete_.data() + step * nd : nullptr, nd,
+                                      nc ? continuous_.data() + step * nc : nullptr, nc};
+            agent.updateDemonstrated(rewards_[i], obs, dts_[step], actions_[step]);
+            ++step;
+        }
+    }
+}
+
+}  // namespace verve
