@@ -66,6 +66,10 @@ doc docs/lua.md '(cd samples/love && cmake -E tar cf ../../build/love-npcs/verve
 doc docs/lua.md 'readelf -d build/src/capi/libverve.so.0'
 in_doc docs/lua.md 'love build/love-npcs/verve-npcs.love '   # the window; the headless run below
 doc docs/lua.md 'love build/love-npcs/verve-npcs.love --headless --minutes 20 --fresh'
+doc docs/lua.md 'mkdir -p build/love-pet'
+doc docs/lua.md 'cp build/stage/lib/lua/5.1/verve.so build/stage/lib/libverve.so.0 build/love-pet/'
+doc docs/lua.md '(cd samples/love_pet && cmake -E tar cf ../../build/love-pet/verve-pet.love --format=zip main.lua conf.lua)'
+doc docs/lua.md 'love build/love-pet/verve-pet.love --headless --seed 1 --shown 30'
 if command -v xvfb-run >/dev/null; then
   doc docs/lua.md 'xvfb-run -a love build/love-npcs/verve-npcs.love --minutes 20 --fresh --screenshot npcs.png'
 fi

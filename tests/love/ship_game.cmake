@@ -1,6 +1,10 @@
 # Ships samples/love the way docs/lua.md says: install, then verve.so and libverve.so.0 beside the
 # game's .love archive (a zip of main.lua and conf.lua).
-# Usage: cmake -DBUILD_DIR=.. -DLIBDIR=lib -DSTAGE=.. -DGAME_SOURCE=.. -DGAME_DIR=.. -P ship_game.cmake
+# Usage: cmake -DBUILD_DIR=.. -DLIBDIR=lib -DSTAGE=.. -DGAME_SOURCE=.. -DGAME_DIR=.. [-DGAME_NAME=verve-npcs]
+#        -P ship_game.cmake
+if(NOT GAME_NAME)
+  set(GAME_NAME verve-npcs)
+endif()
 file(REMOVE_RECURSE ${STAGE} ${GAME_DIR})
 file(MAKE_DIRECTORY ${GAME_DIR})
 execute_process(COMMAND ${CMAKE_COMMAND} --install ${BUILD_DIR} --prefix ${STAGE}
@@ -8,6 +12,6 @@ execute_process(COMMAND ${CMAKE_COMMAND} --install ${BUILD_DIR} --prefix ${STAGE
 # `cmake -E copy` copies what a symlink points to: libverve.so.0 must be the library itself.
 execute_process(COMMAND ${CMAKE_COMMAND} -E copy ${STAGE}/${LIBDIR}/lua/5.1/verve.so
                         ${STAGE}/${LIBDIR}/libverve.so.0 ${GAME_DIR} COMMAND_ERROR_IS_FATAL ANY)
-execute_process(COMMAND ${CMAKE_COMMAND} -E tar cf ${GAME_DIR}/verve-npcs.love --format=zip main.lua conf.lua
+execute_process(COMMAND ${CMAKE_COMMAND} -E tar cf ${GAME_DIR}/${GAME_NAME}.love --format=zip main.lua conf.lua
                 WORKING_DIRECTORY ${GAME_SOURCE} COMMAND_ERROR_IS_FATAL ANY)
-message(STATUS "shipped: ${GAME_DIR}/verve-npcs.love, verve.so, libverve.so.0")
+message(STATUS "shipped: ${GAME_DIR}/${GAME_NAME}.love, verve.so, libverve.so.0")
