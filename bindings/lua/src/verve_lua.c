@@ -13,6 +13,8 @@
 #include <verve_c.h>
 
 #include "lua_compat.h"
+#include "lua_recording.h"
+#include "lua_shared.h"
 #include "lua_warnings.h"
 
 #if defined(_WIN32)
@@ -21,7 +23,6 @@
 #  define LV_EXPORT __attribute__((visibility("default")))
 #endif
 
-#define LV_AGENT_MT "verve.agent"
 #define LV_BRAIN_MT "verve.brain"
 #define LV_BATCH_MT "verve.batch"
 /* sample_values refuses more points than this instead of allocating without bound. */
@@ -46,35 +47,28 @@ typedef struct lv_batch {
     uint32_t* actions;
 } lv_batch;
 
-typedef struct lv_obs {
-    int32_t discrete[VERVE_MAX_DISCRETE_SENSORS]; /* 0-based, as the C ABI wants them */
-    float continuous[VERVE_MAX_CONTINUOUS_SENSORS];
-    uint32_t n_discrete;
-    uint32_t n_continuous;
-} lv_obs;
-
 /* ---- errors and conversions ------------------------------------------------------------- */
 
-static int lv_fail(lua_State* L, const char* fn, verve_result r) {
+int lv_fail(lua_State* L, const char* fn, verve_result r) {
     return luaL_error(L, "verve: %s: %s [%s]", fn, verve_last_error(), verve_result_name(r));
 }
 
 /* For calls taking 1-based sensors or values: the library's message speaks 0-based. */
-static int lv_fail_indexed(lua_State* L, const char* fn, verve_result r) {
+int lv_fail_indexed(lua_State* L, const char* fn, verve_result r) {
     return luaL_error(L, "verve: %s: %s [%s] (the library counts sensors and values from 0, Lua from 1)", fn,
                       verve_last_error(), verve_result_name(r));
 }
 
 /* Lua numbers are doubles; a finite double beyond float range becomes an infinity (which the
  * library refuses) instead of an undefined conversion. */
-static float lv_to_float(lua_Number n) {
+float lv_to_float(lua_Number n) {
     if (n > FLT_MAX) return (float)HUGE_VAL;
     if (n < -FLT_MAX) return (float)-HUGE_VAL;
     return (float)n;
 }
 
 /* The non-negative integer at idx that fits 32 bits, else 0. */
-static int lv_get_u32(lua_State* L, int idx, uint32_t* out) {
+int lv_get_u32(lua_State* L, int idx, uint32_t* out) {
     lua_Integer v = 0;
     if (!lv_tointeger(L, idx, &v) || v < 0 || v > (lua_Integer)UINT32_MAX) return 0;
     *out = (uint32_t)v;
@@ -108,7 +102,7 @@ static lv_agent* lv_push_agent(lua_State* L) {
 /* The native handle of the agent at index 1. Fetch it only after every Lua input is read and every
  * Lua allocation is done, right before the C call: reading a table may run an __index metamethod,
  * and allocating may run a finalizer, and either may close this very agent. */
-static verve_agent* lv_open_agent(lua_State* L) {
+verve_agent* lv_open_agent(lua_State* L) {
     lv_agent* ud = (lv_agent*)luaL_checkudata(L, 1, LV_AGENT_MT);
     if (!ud->handle) luaL_error(L, "verve: the agent is closed");
     return ud->handle;
@@ -359,7 +353,7 @@ static uint32_t lv_read_obs_list(lua_State* L, int obs, const char* fn, const ch
 /* {discrete = {...}, continuous = {...}} at idx; nil means no sensors. Sizes and ranges are
  * the library's to check, so its message reaches the script. Raw: without metamethods, so that no
  * Lua code runs while it reads (the lists' elements are always read raw). */
-static void lv_read_obs(lua_State* L, int idx, const char* fn, int raw, lv_obs* o) {
+void lv_read_obs(lua_State* L, int idx, const char* fn, int raw, lv_obs* o) {
     o->n_discrete = o->n_continuous = 0;
     if (lua_isnoneornil(L, idx)) return;
     if (!lua_istable(L, idx))
@@ -1017,6 +1011,7 @@ static const luaL_Reg lv_agent_methods[] = {
     {"save_string", lv_save_string},
     {"save_binary", lv_save_binary},
     {"save_binary_string", lv_save_binary_string},
+    {"replay", lv_replay},
     {"close", lv_close},
     {NULL, NULL},
 };
@@ -1039,11 +1034,14 @@ static const luaL_Reg lv_module[] = {
     {"load_brain_string", lv_load_brain_string},
     {"batch", lv_new_batch},
     {"warnings", lv_warnings},
+    {"recording", lv_new_recording},
+    {"load_recording", lv_load_recording},
+    {"load_recording_string", lv_load_recording_string},
     {NULL, NULL},
 };
 
 /* A metatable `name` with methods as __index and the metamethods in `meta`. */
-static void lv_register_type(lua_State* L, const char* name, const luaL_Reg* meta, const luaL_Reg* methods) {
+void lv_register_type(lua_State* L, const char* name, const luaL_Reg* meta, const luaL_Reg* methods) {
     luaL_newmetatable(L, name);
     luaL_setfuncs(L, meta, 0);
     lua_newtable(L);
@@ -1066,6 +1064,7 @@ LV_EXPORT int luaopen_verve(lua_State* L) {
     lv_register_type(L, LV_AGENT_MT, lv_agent_meta, lv_agent_methods);
     lv_register_type(L, LV_BRAIN_MT, lv_brain_meta, lv_brain_methods);
     lv_register_type(L, LV_BATCH_MT, lv_batch_meta, lv_batch_methods);
+    lv_register_recordings(L);
     luaL_newlib(L, lv_module);
     return 1;
 }

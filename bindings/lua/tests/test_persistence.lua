@@ -87,3 +87,30 @@ T.check("a damaged binary save is refused with a clear error", function()
   ok, err = pcall(verve.load_string, bytes:sub(1, 40))
   assert(not ok and tostring(err):find("truncated"), tostring(err))
 end)
+
+T.check("recordings: demonstrated steps recorded, saved, loaded and replayed train as the steps did", function()
+  local function desc() return { discrete = { 3 }, continuous = 1, actions = 2, seed = 9 } end
+  local shown, replayed = verve.agent(desc()), verve.agent(desc())
+  local rec = verve.recording(shown)
+  for i = 1, 30 do
+    local obs = { discrete = { i % 3 + 1 }, continuous = { math.sin(i) } }
+    local action = i % 2 + 1
+    rec:add_step(0.1, obs, 0.1, action)
+    shown:update_demonstrated(0.1, obs, 0.1, action)
+    if i % 10 == 0 then rec:add_end_episode(1); shown:end_episode(1) end
+  end
+  rec:add_truncation(0)
+  shown:truncate_episode(0)
+  assert(rec:size() == 34, "size " .. rec:size())
+  local copy = verve.load_recording_string(rec:save_string())
+  assert(copy:save_string() == rec:save_string())
+  replayed:replay(copy)
+  assert(replayed:save_binary_string() == shown:save_binary_string(), "a replay trains as the steps did")
+  T.expect_error("action must be an integer", function() rec:add_step(0, { discrete = { 1 }, continuous = { 0 } }, 0.1, 0) end)
+  T.expect_library_error("add_step", function() rec:add_step(0, { discrete = { 4 }, continuous = { 0 } }, 0.1, 1) end)
+  T.expect_library_error("load_recording_string", function() verve.load_recording_string("VERVEREC garbage") end)
+  local other = verve.agent({ continuous = 2, actions = 2 })
+  T.expect_library_error("replay", function() other:replay(copy) end)
+  rec:close()
+  T.expect_error("closed", function() rec:size() end)
+end)
