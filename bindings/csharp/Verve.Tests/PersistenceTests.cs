@@ -13,6 +13,43 @@ namespace Verve.Tests
 
         public void Dispose() => Directory.Delete(_dir, recursive: true);
 
+        [Fact]
+        public void ARecordingReplaysAsTheDemonstratedStepsItHolds()
+        {
+            using var shown = new Agent(new AgentOptions { Actions = 3, Seed = 4 }.AddDiscreteSensor(2).AddContinuousSensor(false));
+            using var replayed = new Agent(new AgentOptions { Actions = 3, Seed = 4 }.AddDiscreteSensor(2).AddContinuousSensor(false));
+            using var recording = new Recording(shown);
+            for (int i = 0; i < 30; i++)
+            {
+                int[] d = { i % 2 };
+                float[] c = { (float)Math.Sin(i) };
+                recording.AddStep(0.1f, d, c, 0.1f, i % 3);
+                shown.UpdateDemonstrated(0.1f, d, c, 0.1f, i % 3);
+                if (i % 10 == 9) { recording.AddEndEpisode(1f); shown.EndEpisode(1f); }
+            }
+            recording.AddTruncation(0f);
+            shown.TruncateEpisode(0f);
+            Assert.Equal(34, recording.Count);
+            string path = Path.Combine(_dir, "shown.vrec");
+            recording.Save(path);
+            using var loaded = Recording.Load(path);
+            Assert.Equal(recording.SaveToBytes(), loaded.SaveToBytes());
+            replayed.Replay(loaded);
+            Assert.Equal(shown.SaveToBinaryBytes(), replayed.SaveToBinaryBytes());
+
+            byte[] before = recording.SaveToBytes();
+            Assert.Throws<VerveException>(() => recording.AddStep(0f, new[] { 2 }, new[] { 0f }, 0.1f, 0));
+            Assert.Throws<ArgumentOutOfRangeException>(() => recording.AddStep(0f, new[] { 0 }, new[] { 0f }, 0.1f, -1));
+            Assert.Equal(before, recording.SaveToBytes());
+            byte[] damaged = (byte[])before.Clone();
+            damaged[damaged.Length / 2] ^= 0x10;
+            Assert.Equal(ResultCode.Format, Assert.Throws<VerveException>(() => Recording.LoadFromBytes(damaged)).Code);
+            using var stranger = new Agent(new AgentOptions { Actions = 2 }.AddContinuousSensor(false));
+            Assert.Throws<VerveException>(() => stranger.Replay(loaded));
+            recording.Dispose();
+            Assert.Throws<ObjectDisposedException>(() => recording.Count);
+        }
+
         private static Agent Trained(ulong seed = 11)
         {
             var agent = TestAgents.Mixed(seed);

@@ -114,6 +114,15 @@ namespace Verve
         /// <exception cref="VerveException">NaN or praise outside [-1, 1].</exception>
         public void Teach(float praise) => VerveException.ThrowIfFailed(NativeMethods.verve_agent_teach(Handle, praise));
 
+        /// <summary>Every entry of <paramref name="recording"/> into this agent, in order, as demonstrated steps and trial
+        /// ends (docs/teaching.md, "Recordings").</summary>
+        /// <exception cref="VerveException">The agent's sensors or actions are not the recording's (nothing is replayed).</exception>
+        public void Replay(Recording recording)
+        {
+            if (recording == null) throw new ArgumentNullException(nameof(recording));
+            VerveException.ThrowIfFailed(NativeMethods.verve_agent_replay(Handle, recording.Handle));
+        }
+
         /// <summary>Ends a trial that really ended (goal reached, NPC died): <paramref name="finalReward"/> is the
         /// last reward there is; nothing is expected after it.</summary>
         public void EndEpisode(float finalReward) =>

@@ -43,6 +43,20 @@ namespace Verve
         }
     }
 
+    /// <summary>A <c>verve_recording*</c>, owned by a <see cref="Recording"/>.</summary>
+    internal sealed class RecordingHandle : NativeHandle
+    {
+        private RecordingHandle() { }
+
+        internal RecordingHandle(IntPtr recording) : base(recording) { }
+
+        protected override bool ReleaseHandle()
+        {
+            NativeMethods.verve_recording_destroy(handle);
+            return true;
+        }
+    }
+
     /// <summary>A <c>verve_batch*</c>, owned by a <see cref="Batch"/>.</summary>
     internal sealed class BatchHandle : NativeHandle
     {

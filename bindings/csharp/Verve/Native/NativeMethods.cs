@@ -58,6 +58,40 @@ namespace Verve.Native
         internal static extern ResultCode verve_agent_teach(AgentHandle agent, float praise);
 
         [DllImport(Library, CallingConvention = CallingConvention.Cdecl)]
+        internal static extern ResultCode verve_recording_create(AgentHandle shapedLike, out IntPtr recording);
+
+        [DllImport(Library, CallingConvention = CallingConvention.Cdecl)]
+        internal static extern void verve_recording_destroy(IntPtr recording);
+
+        [DllImport(Library, CallingConvention = CallingConvention.Cdecl)]
+        internal static extern ResultCode verve_recording_add_step(RecordingHandle recording, float reward,
+            int* discrete, uint nDiscrete, float* continuous, uint nContinuous, float dt, uint action);
+
+        [DllImport(Library, CallingConvention = CallingConvention.Cdecl)]
+        internal static extern ResultCode verve_recording_add_end_episode(RecordingHandle recording, float finalReward);
+
+        [DllImport(Library, CallingConvention = CallingConvention.Cdecl)]
+        internal static extern ResultCode verve_recording_add_truncation(RecordingHandle recording, float reward);
+
+        [DllImport(Library, CallingConvention = CallingConvention.Cdecl)]
+        internal static extern ResultCode verve_recording_get_size(RecordingHandle recording, out ulong entries);
+
+        [DllImport(Library, CallingConvention = CallingConvention.Cdecl)]
+        internal static extern ResultCode verve_recording_save(RecordingHandle recording, byte* path);
+
+        [DllImport(Library, CallingConvention = CallingConvention.Cdecl)]
+        internal static extern ResultCode verve_recording_save_memory(RecordingHandle recording, byte* buffer, ref UIntPtr size);
+
+        [DllImport(Library, CallingConvention = CallingConvention.Cdecl)]
+        internal static extern ResultCode verve_recording_load(byte* path, out IntPtr recording);
+
+        [DllImport(Library, CallingConvention = CallingConvention.Cdecl)]
+        internal static extern ResultCode verve_recording_load_memory(byte* data, UIntPtr size, out IntPtr recording);
+
+        [DllImport(Library, CallingConvention = CallingConvention.Cdecl)]
+        internal static extern ResultCode verve_agent_replay(AgentHandle agent, RecordingHandle recording);
+
+        [DllImport(Library, CallingConvention = CallingConvention.Cdecl)]
         internal static extern ResultCode verve_agent_end_episode(AgentHandle agent, float finalReward);
 
         [DllImport(Library, CallingConvention = CallingConvention.Cdecl)]
