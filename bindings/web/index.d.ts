@@ -107,6 +107,8 @@ export class Agent {
     mask?: ArrayLike<boolean | 0 | 1>): void;
   /** A teacher's judgement in [-1, 1] of what the agent did over the last 2.5 s (docs/teaching.md); not a reward. */
   teach(praise: number): void;
+  /** Every entry of a recording into this agent, as demonstrated steps and trial ends (docs/teaching.md). */
+  replay(recording: Recording): void;
   endEpisode(finalReward: number): void;
   truncateEpisode(reward: number): void;
   resetShortTermMemory(): void;
@@ -141,6 +143,18 @@ export class Brain {
   dispose(): void;
 }
 
+/** Demonstrated steps kept for replay (docs/teaching.md, "Recordings"). */
+export class Recording {
+  private constructor();
+  readonly disposed: boolean;
+  addStep(reward: number, observation: Observation | null | undefined, dt: number, action: number): void;
+  addEndEpisode(finalReward: number): void;
+  addTruncation(reward: number): void;
+  size(): number;
+  saveBytes(): Uint8Array;
+  dispose(): void;
+}
+
 export class Batch {
   private constructor();
   readonly disposed: boolean;
@@ -168,6 +182,8 @@ export class Verve {
   loadAgent(data: SaveData): Agent;
   createBrain(desc?: AgentDescriptor): Brain;
   loadBrain(data: SaveData): Brain;
+  createRecording(agent: Agent): Recording;
+  loadRecording(data: SaveData): Recording;
   createBatch(): Batch;
   /** The Emscripten module underneath, for tools and tests. */
   readonly module: unknown;

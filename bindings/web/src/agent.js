@@ -83,6 +83,15 @@ export class Agent {
       flags ? m : 0, flags, action));
   }
 
+  /** Every entry of a Recording into this agent, as demonstrated steps and trial ends (docs/teaching.md). */
+  replay(recording) {
+    const h = this.live();
+    if (recording === null || typeof recording !== 'object' || typeof recording.live !== 'function' || !('handle' in recording)) {
+      throw invalidArgument('replay takes a Recording');
+    }
+    this.rt.check(this.rt.m._verve_agent_replay(h, recording.live()));
+  }
+
   /** A teacher's judgement in [-1, 1] of what the agent did over the last 2.5 s (docs/teaching.md); not a reward. */
   teach(praise) {
     const h = this.live();

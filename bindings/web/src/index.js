@@ -11,12 +11,14 @@ import { Runtime } from './runtime.js';
 import { Agent } from './agent.js';
 import { Brain } from './brain.js';
 import { Batch } from './batch.js';
+import { Recording } from './recording.js';
 import { load } from './saves.js';
 
 export { VerveError, RESULT_NAMES } from './errors.js';
 export { Agent } from './agent.js';
 export { Brain } from './brain.js';
 export { Batch } from './batch.js';
+export { Recording } from './recording.js';
 
 /** The library's major version this binding speaks to. */
 export const BINDING_MAJOR_VERSION = 0;
@@ -76,6 +78,19 @@ export class Verve {
 
   loadBrain(data) {
     return new Brain(this.rt, load(this.rt, '_verve_brain_load_memory', data));
+  }
+
+  /** An empty recording of demonstrated steps with `agent`'s sensors and actions (docs/teaching.md). */
+  createRecording(agent) {
+    if (!(agent instanceof Agent)) throw invalidArgument('createRecording takes an Agent');
+    const [out] = this.rt.carve([4]);
+    this.rt.check(this.rt.m._verve_recording_create(agent.live(), out));
+    return new Recording(this.rt, this.rt.heap.u32[out >> 2]);
+  }
+
+  /** A recording from the bytes Recording.saveBytes made. */
+  loadRecording(data) {
+    return new Recording(this.rt, load(this.rt, '_verve_recording_load_memory', data));
   }
 
   /** A batch for many agents per call (single-threaded in this build). */

@@ -106,3 +106,34 @@ test("the C ABI's file saves work on Emscripten's in-memory file system", () => 
   copy.dispose();
   agent.dispose();
 });
+
+test('a recording of demonstrated steps round-trips through bytes and replays as the steps did', () => {
+  const desc = { discrete: [2], continuous: 1, actions: 3, seed: 4 };
+  const shown = verve.createAgent(desc);
+  const replayed = verve.createAgent(desc);
+  const rec = verve.createRecording(shown);
+  for (let i = 0; i < 30; ++i) {
+    const obs = { discrete: [i % 2], continuous: [Math.sin(i)] };
+    rec.addStep(0.1, obs, 0.1, i % 3);
+    shown.updateDemonstrated(0.1, obs, 0.1, i % 3);
+    if (i % 10 === 9) { rec.addEndEpisode(1); shown.endEpisode(1); }
+  }
+  rec.addTruncation(0);
+  shown.truncateEpisode(0);
+  assert.equal(rec.size(), 34);
+  const copy = verve.loadRecording(rec.saveBytes());
+  assert.deepEqual(copy.saveBytes(), rec.saveBytes());
+  replayed.replay(copy);
+  assert.deepEqual(replayed.saveBinaryBytes(), shown.saveBinaryBytes());
+  const before = rec.saveBytes();
+  assert.throws(() => rec.addStep(0, { discrete: [2], continuous: [0] }, 0.1, 0), VerveError);
+  assert.throws(() => rec.addStep(0, { discrete: [0], continuous: [0] }, 0.1, -1), /action/);
+  assert.deepEqual(rec.saveBytes(), before);
+  const damaged = before.slice();
+  damaged[damaged.length >> 1] ^= 0x10;
+  assert.throws(() => verve.loadRecording(damaged), /checksum/);
+  const stranger = verve.createAgent({ continuous: 2, actions: 2 });
+  assert.throws(() => stranger.replay(copy), /not the agent's/);
+  for (const x of [shown, replayed, rec, copy, stranger]) x.dispose();
+  assert.throws(() => rec.size(), /disposed/);
+});
