@@ -55,6 +55,7 @@ public:
 
 private:
     void checkRoom() const;
+    void addEnd(Kind kind, float reward, const char* what);  // a trial's end of either kind
     AgentDescriptor shape_;  // the sensors and actions; nothing else is used
     std::vector<Kind> kinds_;
     std::vector<float> rewards_;

@@ -68,23 +68,18 @@ void Recording::addStep(float reward, ObservationView obs, float dt, std::uint32
     continuous_.insert(continuous_.end(), obs.continuous, obs.continuous + obs.numContinuous);
 }
 
-void Recording::addEndEpisode(float finalReward) {
-    core::checkFinite(finalReward, "final reward");
+void Recording::addEnd(Kind kind, float reward, const char* what) {
+    core::checkFinite(reward, what);
     checkRoom();
     core::reserveRoom(kinds_, kinds_.size() + 1);
     core::reserveRoom(rewards_, rewards_.size() + 1);
-    kinds_.push_back(Kind::EndEpisode);
-    rewards_.push_back(finalReward);
-}
-
-void Recording::addTruncation(float reward) {
-    core::checkFinite(reward, "reward");
-    checkRoom();
-    core::reserveRoom(kinds_, kinds_.size() + 1);
-    core::reserveRoom(rewards_, rewards_.size() + 1);
-    kinds_.push_back(Kind::Truncation);
+    kinds_.push_back(kind);
     rewards_.push_back(reward);
 }
+
+void Recording::addEndEpisode(float finalReward) { addEnd(Kind::EndEpisode, finalReward, "final reward"); }
+
+void Recording::addTruncation(float reward) { addEnd(Kind::Truncation, reward, "reward"); }
 
 void Recording::replayInto(Agent& agent) const {
     const AgentDescriptor& d = agent.descriptor();

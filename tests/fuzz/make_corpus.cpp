@@ -31,24 +31,13 @@ const Kind kKinds[] = {
     {"no-sensors", [](verve_agent_desc& d) { d.num_actions = 4; }},
 };
 
-using MemorySave = verve_result (*)(const verve_agent*, void*, size_t*);
-
-bool writeSave(const verve_agent* agent, MemorySave save, const std::string& path) {
+// A memory save of `object` (an agent, or a recording) by the two-call pattern, written to `path`.
+template <typename Object>
+bool writeSave(const Object* object, verve_result(VERVE_CALL* save)(const Object*, void*, size_t*), const std::string& path) {
     size_t size = 0;
-    if (save(agent, nullptr, &size) != VERVE_OK) return false;
+    if (save(object, nullptr, &size) != VERVE_OK) return false;
     std::vector<char> bytes(size);
-    if (save(agent, bytes.data(), &size) != VERVE_OK) return false;
-    FILE* f = std::fopen(path.c_str(), "wb");
-    if (f == nullptr) return false;
-    const bool ok = std::fwrite(bytes.data(), 1, size, f) == size;
-    return std::fclose(f) == 0 && ok;
-}
-
-bool writeRecording(const verve_recording* recording, const std::string& path) {
-    size_t size = 0;
-    if (verve_recording_save_memory(recording, nullptr, &size) != VERVE_OK) return false;
-    std::vector<char> bytes(size);
-    if (verve_recording_save_memory(recording, bytes.data(), &size) != VERVE_OK) return false;
+    if (save(object, bytes.data(), &size) != VERVE_OK) return false;
     FILE* f = std::fopen(path.c_str(), "wb");
     if (f == nullptr) return false;
     const bool ok = std::fwrite(bytes.data(), 1, size, f) == size;
@@ -98,7 +87,7 @@ int main(int argc, char** argv) {
                 if (step == 4) verve_recording_add_truncation(recording, -0.1f);
             }
             verve_recording_add_end_episode(recording, 1.0f);
-            const bool ok = writeRecording(recording, std::string(argv[2]) + "/" + kind.name + ".vrec");
+            const bool ok = writeSave(recording, verve_recording_save_memory, std::string(argv[2]) + "/" + kind.name + ".vrec");
             verve_recording_destroy(recording);
             if (!ok) {
                 std::fprintf(stderr, "%s: cannot write its recording\n", kind.name);
