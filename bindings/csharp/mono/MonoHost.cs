@@ -164,6 +164,47 @@ static class MonoHost
             }
         });
 
+        Check("Agent.UpdateDemonstrated(Single, ReadOnlySpan<Int32>, ReadOnlySpan<Single>, Single, Int32, ReadOnlySpan<Byte>); " +
+              "Agent.Teach(Single); Agent.Replay(Recording); Recording..ctor(Agent); " +
+              "Recording.AddStep(Single, ReadOnlySpan<Int32>, ReadOnlySpan<Single>, Single, Int32); " +
+              "Recording.AddEndEpisode(Single); Recording.AddTruncation(Single); Recording.get_Count(); " +
+              "Recording.Save(String); Recording.Load(String); Recording.SaveToBytes(); " +
+              "Recording.LoadFromBytes(ReadOnlySpan<Byte>); Recording.Dispose()", () =>
+        {
+            var options = new AgentOptions { Actions = 3, Seed = 2 }.AddContinuousSensor(false);
+            using (var shown = new Agent(options))
+            using (var replayed = new Agent(options))
+            {
+                var recording = new Recording(shown);
+                shown.Teach(0f);
+                for (int i = 0; i < 12; ++i)
+                {
+                    float[] c = { 0.1f * i - 0.5f };
+                    shown.UpdateDemonstrated(0f, ReadOnlySpan<int>.Empty, c, 0.1f, 2, ReadOnlySpan<byte>.Empty);
+                    recording.AddStep(0f, ReadOnlySpan<int>.Empty, c, 0.1f, 2);
+                }
+                shown.Teach(1f);
+                shown.EndEpisode(1f);
+                recording.AddEndEpisode(1f);
+                recording.AddTruncation(0f);
+                shown.TruncateEpisode(0f);
+                Require(recording.Count == 14, "recording count " + recording.Count);
+                string path = Path.Combine(Path.GetTempPath(), "verve-mono-" + Guid.NewGuid().ToString("N") + ".vrec");
+                recording.Save(path);
+                using (var loaded = Recording.Load(path))
+                using (var fromBytes = Recording.LoadFromBytes(recording.SaveToBytes()))
+                {
+                    File.Delete(path);
+                    Require(loaded.SaveToBytes().SequenceEqual(fromBytes.SaveToBytes()), "a recording's file and bytes differ");
+                    replayed.Teach(0f);
+                    replayed.Replay(loaded);
+                    replayed.Teach(1f);  // as shown was praised before its trial ended: not part of a recording
+                }
+                recording.Dispose();
+                Require(replayed.ActionProbabilities.Length == 3, "a replayed agent has no policy");
+            }
+        });
+
         Check("ValueAxis.Continuous(Int32, Int32); ValueAxis.Discrete(Int32, Int32); ValueAxis.get_Kind(); ValueAxis.get_Index(); " +
               "ValueAxis.get_Samples(); ValueAxis.Equals(ValueAxis); ValueAxis.Equals(Object); ValueAxis.GetHashCode(); ValueAxis.ToString()", () =>
         {
