@@ -67,6 +67,10 @@ func test_signals():
 	check(node.truncate_episode(0.5) and ended[1] == [0.5, true], "truncate_episode signals truncated")
 	check(node.demonstrate(0.0, [], [0.1], TICK, 1) and chosen[4] == 1 and node.action == 1,
 		"demonstrate() records the demonstrated action as the decision")
+	var masked = []
+	for i in 60:
+		masked.append(node.act(0.0, [], [0.2], TICK, [0, 1]))
+	check(not 0 in masked and node.agent.get_stats()["steps"] == 15, "a mask limits the choice (%s)" % [masked])
 	node.queue_free()
 
 
@@ -189,6 +193,9 @@ func _idle(_delta):
 		and pair.overlay.values.size() == pair.overlay.COLUMNS * pair.overlay.HEAT_ROWS, "a 2-D heat map for 2 sensors")
 	check(wide.overlay.draws > 0 and wide.overlay.rows == 0 and wide.overlay.probabilities.size() == 4,
 		"with 3 sensors the overlay draws the bars only")
+	var shown = wide.overlay
+	wide.debug_overlay = false
+	check(wide.overlay == null and shown.is_queued_for_deletion(), "turning debug_overlay off removes the overlay")
 	quit()
 
 
