@@ -6,7 +6,9 @@
 #   c-sdk/windows-x86_64   the mingw-release preset; its suites, and a consumer of this folder, under Wine
 #   lua/, love/            the LuaJIT/5.4 modules (Linux) and the LuaJIT module (Windows, suite under
 #                          Wine with luajit.exe); the LÖVE game's folders, the Linux one played by LÖVE
-#   godot/addons/verve     the GDNative addon (Linux), run by godot3-server from this folder
+#   godot/addons/verve     the GDNative addon (Linux) with its editor plugin and VerveAgentNode node,
+#                          run by godot3-server from this folder
+#   godot/sample           the sample game with that addon inside: opens and learns as it is
 #   csharp/                the NuGet and Unity packages, checked by bindings/csharp/test.sh
 # plus README.md (what is where) and SHA256SUMS. About 7 minutes on 2 cores from a fresh clone (2 of
 # them making the Debian 11 root, kept for reruns), about 2 minutes when rerun. Needs root
@@ -91,11 +93,24 @@ cp -a build/godot/tests "$work/godot-tests"
 rm -rf "$work/godot-tests/addons/verve"
 cp -a "$dist/godot/addons/verve" "$work/godot-tests/addons/"
 cp "$dist/godot/addons/verve/bin/x11/libverve_godot.so" "$work/godot-tests/addons/verve/bin/x11/libverve_godot_other.so"
-if ! LANG=en timeout 120 godot3-server --path "$work/godot-tests" --fixed-fps 60 --script res://test_agent.gd \
-    > "$work/godot.log" 2>&1 || grep -qE "SCRIPT ERROR|Parse Error" "$work/godot.log"; then
-  cat "$work/godot.log" >&2; echo "package.sh: the Godot addon failed in godot3-server" >&2; exit 1
-fi
-tail -n 1 "$work/godot.log"
+# test_node.gd: the VerveAgentNode node and its overlay, and the doc's NPC learning. -e --quit: the
+# editor loads the addon's plugin (the test project enables it); any ERROR there fails.
+godot_run() {  # <project> <pattern that fails the run> <godot3-server arguments...>
+  local project=$1 fail=$2; shift 2
+  if ! LANG=en timeout 300 godot3-server --path "$project" "$@" > "$work/godot.log" 2>&1 \
+      || grep -qE "$fail" "$work/godot.log"; then
+    cat "$work/godot.log" >&2; echo "package.sh: the Godot addon failed in godot3-server ($*)" >&2; exit 1
+  fi
+  tail -n 1 "$work/godot.log"
+}
+godot_run "$work/godot-tests" "SCRIPT ERROR|Parse Error" --fixed-fps 60 --script res://test_agent.gd
+godot_run "$work/godot-tests" "SCRIPT ERROR|Parse Error" --fixed-fps 60 --script res://test_node.gd
+godot_run "$work/godot-tests" "ERROR|Unable to load addon" -e --quit
+# The sample game with the bundle's addon, learning where it will be opened (about 6 s).
+rm -rf "$dist/godot/sample"
+cp -a samples/godot "$dist/godot/sample"
+cp -a "$dist/godot/addons" "$dist/godot/sample/"
+godot_run "$dist/godot/sample" "SCRIPT ERROR|Parse Error" --fixed-fps 60 --verve-test
 
 step "C#: NuGet and Unity packages with the bundle's libraries (bindings/csharp/test.sh)"
 mkdir -p "$work/csharp-linux"
