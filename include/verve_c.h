@@ -363,6 +363,16 @@ VERVE_API verve_result VERVE_CALL verve_batch_update(verve_batch* batch, verve_a
     const int32_t* discrete, const uint32_t* discrete_offsets, uint32_t discrete_total,
     const float* continuous, const uint32_t* continuous_offsets, uint32_t continuous_total,
     float dt, uint32_t* out_actions, verve_result* out_results);
+/* verve_batch_update with demonstrated steps (docs/teaching.md): demonstrated[i] is the action the
+ * host took for agent i (as verve_agent_update_demonstrated; out_actions[i] gets it back), or
+ * VERVE_AGENT_CHOOSES for the agent's own choice (demonstrated NULL: every agent chooses). A
+ * demonstrated action out of range is refused with the rest of the checks, before anything changes. */
+#define VERVE_AGENT_CHOOSES 0xFFFFFFFFu
+VERVE_API verve_result VERVE_CALL verve_batch_update_demonstrated(verve_batch* batch, verve_agent* const* agents,
+    uint32_t n, const float* rewards,
+    const int32_t* discrete, const uint32_t* discrete_offsets, uint32_t discrete_total,
+    const float* continuous, const uint32_t* continuous_offsets, uint32_t continuous_total,
+    float dt, const uint32_t* demonstrated, uint32_t* out_actions, verve_result* out_results);
 
 /* Recordings (docs/teaching.md, "Recordings"): demonstrated steps kept in memory or in a file
  * (checksummed, versioned, bounded like a save) and replayed into an agent to train it before it

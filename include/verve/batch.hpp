@@ -35,6 +35,9 @@ struct BatchOptions {
     TaskScheduler scheduler;  // both callbacks set: the host's job system; both null: Verve's own pool
 };
 
+// BatchStep::demonstrated's "no demonstration: the agent chooses".
+inline constexpr std::uint32_t kAgentChooses = 0xFFFFFFFFu;
+
 // One step of N agents, from packed arrays (structure-of-arrays, as an engine keeps its NPCs).
 // Agent i reads rewards[i], and its discrete and continuous sensor values from `discrete` and
 // `continuous`: at discreteOffsets[i] / continuousOffsets[i] when those are given, otherwise right
@@ -50,7 +53,10 @@ struct BatchStep {
     const std::uint32_t* continuousOffsets = nullptr;
     std::size_t continuousTotal = 0;
     float dt = 0.0f;                  // seconds since the previous step, the same for all
-    std::uint32_t* actions = nullptr; // out: agent i's action
+    // Optional: demonstrated[i] is the action the host took for agent i (a demonstrated step,
+    // Agent::updateDemonstrated), or kAgentChooses for the agent's own choice.
+    const std::uint32_t* demonstrated = nullptr;
+    std::uint32_t* actions = nullptr; // out: agent i's action (the demonstrated one, if any)
     int* results = nullptr;           // optional out: per agent 0 (fine) or the ErrorCode of its failure
 };
 

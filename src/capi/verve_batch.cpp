@@ -84,14 +84,16 @@ VERVE_API verve_result VERVE_CALL verve_batch_get_worker_count(const verve_batch
     });
 }
 
-VERVE_API verve_result VERVE_CALL verve_batch_update(verve_batch* batch, verve_agent* const* agents, uint32_t n,
-                                                     const float* rewards, const int32_t* discrete,
-                                                     const uint32_t* discrete_offsets, uint32_t discrete_total,
-                                                     const float* continuous, const uint32_t* continuous_offsets,
-                                                     uint32_t continuous_total, float dt, uint32_t* out_actions,
-                                                     verve_result* out_results) {
+namespace {
+
+// verve_batch_update and verve_batch_update_demonstrated (`demonstrated` NULL: every agent chooses).
+verve_result batchUpdate(const char* function, verve_batch* batch, verve_agent* const* agents, uint32_t n,
+                         const float* rewards, const int32_t* discrete, const uint32_t* discrete_offsets,
+                         uint32_t discrete_total, const float* continuous, const uint32_t* continuous_offsets,
+                         uint32_t continuous_total, float dt, const uint32_t* demonstrated, uint32_t* out_actions,
+                         verve_result* out_results) {
     bool verdicts = false;  // out_results holds each agent's verdict from verve::Batch
-    const verve_result result = guarded(__func__, [&] {
+    const verve_result result = guarded(function, [&] {
         requireArg(batch, "batch");
         if (n == 0) return;
         requireArg(agents, "agents");
@@ -128,6 +130,7 @@ VERVE_API verve_result VERVE_CALL verve_batch_update(verve_batch* batch, verve_a
         step.continuousOffsets = continuous_offsets;
         step.continuousTotal = continuous_total;
         step.dt = dt;
+        step.demonstrated = demonstrated;
         step.actions = out_actions;
         step.results = batch->results.data();
         try {
@@ -153,6 +156,27 @@ VERVE_API verve_result VERVE_CALL verve_batch_update(verve_batch* batch, verve_a
         for (uint32_t i = 0; i < n; ++i) out_results[i] = result;
     }
     return result;
+}
+
+}  // namespace
+
+VERVE_API verve_result VERVE_CALL verve_batch_update(verve_batch* batch, verve_agent* const* agents, uint32_t n,
+                                                     const float* rewards, const int32_t* discrete,
+                                                     const uint32_t* discrete_offsets, uint32_t discrete_total,
+                                                     const float* continuous, const uint32_t* continuous_offsets,
+                                                     uint32_t continuous_total, float dt, uint32_t* out_actions,
+                                                     verve_result* out_results) {
+    return batchUpdate(__func__, batch, agents, n, rewards, discrete, discrete_offsets, discrete_total, continuous,
+                       continuous_offsets, continuous_total, dt, nullptr, out_actions, out_results);
+}
+
+VERVE_API verve_result VERVE_CALL verve_batch_update_demonstrated(
+    verve_batch* batch, verve_agent* const* agents, uint32_t n, const float* rewards, const int32_t* discrete,
+    const uint32_t* discrete_offsets, uint32_t discrete_total, const float* continuous,
+    const uint32_t* continuous_offsets, uint32_t continuous_total, float dt, const uint32_t* demonstrated,
+    uint32_t* out_actions, verve_result* out_results) {
+    return batchUpdate(__func__, batch, agents, n, rewards, discrete, discrete_offsets, discrete_total, continuous,
+                       continuous_offsets, continuous_total, dt, demonstrated, out_actions, out_results);
 }
 
 }  // extern "C"

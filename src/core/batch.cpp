@@ -151,7 +151,12 @@ void Batch::Impl::updateGroups(std::uint32_t begin, std::uint32_t end) noexcept 
         ErrorCode code = ErrorCode::Internal;
         const char* what = "unknown exception";
         try {
-            s.actions[i] = s.agents[i]->update(s.rewards[i], views[i], s.dt);
+            if (s.demonstrated != nullptr && s.demonstrated[i] != kAgentChooses) {
+                s.agents[i]->updateDemonstrated(s.rewards[i], views[i], s.dt, s.demonstrated[i]);
+                s.actions[i] = s.demonstrated[i];
+            } else {
+                s.actions[i] = s.agents[i]->update(s.rewards[i], views[i], s.dt);
+            }
             agent.ahead = nullptr;
             continue;
         } catch (const Error& e) {
@@ -270,6 +275,9 @@ void Batch::update(const BatchStep& s) {
             b.views[i] = ObservationView{nd > 0 ? s.discrete + d : nullptr, nd, nc > 0 ? s.continuous + c : nullptr, nc};
             core::checkObservation(a.desc, b.views[i]);
             core::checkFinite(s.rewards[i], "reward");
+            if (s.demonstrated != nullptr && s.demonstrated[i] != kAgentChooses) {
+                core::checkDemonstratedAction(a.desc, s.demonstrated[i], nullptr);
+            }
             b.groupOf[i] = b.brainGroups.of(a.brain.get());
         } catch (const Error& e) {
             code = static_cast<int>(e.code());

@@ -357,6 +357,51 @@ protected:
     std::vector<std::string> before_;
 };
 
+TEST_F(BatchRefusal, ADemonstratedActionOutOfRangeRefusesTheWholeCall) {
+    const uint32_t demonstrated[3] = {VERVE_AGENT_CHOOSES, 3, 0};  // 3 actions: 0..2
+    for (auto& a : actions_) a = 77;
+    EXPECT_EQ(verve_batch_update_demonstrated(batch_, agents_, 3, rewards_, discrete_, nullptr, 3, continuous_, nullptr, 3,
+                                              0.1f, demonstrated, actions_, results_),
+              VERVE_ERROR_INVALID_ARGUMENT);
+    EXPECT_NE(std::string(verve_last_error()).find("agents[1]"), std::string::npos) << verve_last_error();
+    EXPECT_EQ(results_[0], VERVE_OK);
+    EXPECT_EQ(results_[1], VERVE_ERROR_INVALID_ARGUMENT);
+    expectUnchanged();
+}
+
+// Demonstrated steps in a batch are those of single calls in array order; the others choose.
+TEST_F(BatchRefusal, DemonstratedStepsInABatchAreThoseOfSingleCalls) {
+    const verve_agent_desc d = shape(4, 1, 8, 3, 9);
+    verve_agent* twins[3] = {};
+    for (int i = 0; i < 3; ++i) {
+        ASSERT_EQ(verve_agent_create(&d, &twins[i]), VERVE_OK);
+        uint32_t a = 0;
+        ASSERT_EQ(verve_agent_update(twins[i], rewards_[i], &discrete_[i], 1, &continuous_[i], 1, 0.1f, &a), VERVE_OK);
+    }
+    for (int step = 0; step < 20; ++step) {
+        const uint32_t demonstrated[3] = {VERVE_AGENT_CHOOSES, static_cast<uint32_t>(step % 3), 2};
+        for (int i = 0; i < 3; ++i) continuous_[i] = 0.1f * static_cast<float>((step + i) % 10) - 0.5f;
+        ASSERT_EQ(verve_batch_update_demonstrated(batch_, agents_, 3, rewards_, discrete_, nullptr, 3, continuous_, nullptr,
+                                                  3, 0.1f, demonstrated, actions_, results_),
+                  VERVE_OK)
+            << verve_last_error();
+        for (int i = 0; i < 3; ++i) {
+            uint32_t a = 99;
+            if (demonstrated[i] == VERVE_AGENT_CHOOSES) {
+                ASSERT_EQ(verve_agent_update(twins[i], rewards_[i], &discrete_[i], 1, &continuous_[i], 1, 0.1f, &a), VERVE_OK);
+            } else {
+                ASSERT_EQ(verve_agent_update_demonstrated(twins[i], rewards_[i], &discrete_[i], 1, &continuous_[i], 1, 0.1f,
+                                                          nullptr, 0, demonstrated[i]),
+                          VERVE_OK);
+                a = demonstrated[i];
+            }
+            EXPECT_EQ(actions_[i], a) << "step " << step << " agent " << i;
+        }
+    }
+    for (int i = 0; i < 3; ++i) EXPECT_EQ(saved(agents_[i]), saved(twins[i])) << "agent " << i;
+    for (auto* t : twins) verve_agent_destroy(t);
+}
+
 TEST_F(BatchRefusal, OneBadObservationRefusesTheWholeCall) {
     continuous_[1] = std::numeric_limits<float>::quiet_NaN();
     discrete_[2] = 4;  // out of range: 4 values
