@@ -1,5 +1,6 @@
 // libFuzzer target: crowds. Fuzzed descriptors make brains and agents of their own; a crowd lists
-// bodies and agents in any order, repeats included, and is stepped by verve_batch_update on
+// bodies and agents in any order, repeats included, and is stepped by verve_batch_update (or, with
+// demonstrated actions, verve_batch_update_demonstrated) on
 // Verve's pool or on a host's job system (ranges run in reverse), with packed or spaced
 // observations, bad values, wrong totals and NULL entries, between bodies made, handles destroyed
 // and brains saved. The same calls run on a twin world built alike, its batch steps done as single
@@ -96,6 +97,10 @@ struct Step {
     std::vector<uint32_t> numDiscrete, numContinuous;  // each entry's sensors (its shape, whatever was packed)
     float dt = 0.1f;
     bool host = false;
+    // Through verve_batch_update_demonstrated: per entry an action the host took (mostly one the
+    // agent has), or VERVE_AGENT_CHOOSES.
+    bool demonstrates = false;
+    std::vector<uint32_t> demonstrated;
 };
 
 // Mostly what a working game passes, so that batches are accepted and compared with the twin's
@@ -122,6 +127,7 @@ Step readStep(FuzzedDataProvider& in, const World& world) {
     s.host = in.ConsumeBool();
     const size_t n = in.ConsumeIntegralInRange<size_t>(0, 12);
     const bool spaced = in.ConsumeBool();
+    s.demonstrates = in.ConsumeIntegralInRange<int>(0, 3) == 0;
     for (size_t i = 0; i < n && !world.members.empty(); ++i) {
         const bool null = in.ConsumeIntegralInRange<int>(0, 31) == 0;
         const size_t m = null ? kMaxMembers : in.ConsumeIntegralInRange<size_t>(0, world.members.size() - 1);
@@ -133,6 +139,12 @@ Step readStep(FuzzedDataProvider& in, const World& world) {
         s.numDiscrete.push_back(d.num_discrete_sensors);
         s.numContinuous.push_back(d.num_continuous_sensors);
         s.rewards.push_back(mostlyGood(in, -1.5f, 1.5f));
+        if (s.demonstrates) {
+            const int kind = in.ConsumeIntegralInRange<int>(0, 15);
+            s.demonstrated.push_back(kind == 0 ? in.ConsumeIntegral<uint32_t>()
+                                     : kind < 6 ? VERVE_AGENT_CHOOSES
+                                                : in.ConsumeIntegralInRange<uint32_t>(0, d.num_actions - 1));
+        }
         if (spaced) {  // a gap before each agent's values, as in a struct of arrays with other fields
             s.discrete.resize(s.discrete.size() + in.ConsumeIntegralInRange<size_t>(0, 2), -7);
             s.continuous.resize(s.continuous.size() + in.ConsumeIntegralInRange<size_t>(0, 2), -7.0f);
@@ -167,11 +179,16 @@ void batchStep(const Step& s, World& a, World& b) {
     std::vector<uint32_t> actions(n, UINT32_MAX);
     std::vector<verve_result> results(n, VERVE_ERROR_INTERNAL);
     const std::vector<uint64_t> before = a.steps();
-    const verve_result r = verve_batch_update(
-        batch(s.host), crowd.data(), n, s.rewards.data(), s.discrete.data(),
-        s.discreteOffsets.empty() ? nullptr : s.discreteOffsets.data(), s.discreteTotal, s.continuous.data(),
-        s.continuousOffsets.empty() ? nullptr : s.continuousOffsets.data(), s.continuousTotal, s.dt, actions.data(),
-        results.data());
+    const uint32_t* dOffsets = s.discreteOffsets.empty() ? nullptr : s.discreteOffsets.data();
+    const uint32_t* cOffsets = s.continuousOffsets.empty() ? nullptr : s.continuousOffsets.data();
+    const verve_result r =
+        s.demonstrates
+            ? verve_batch_update_demonstrated(batch(s.host), crowd.data(), n, s.rewards.data(), s.discrete.data(), dOffsets,
+                                              s.discreteTotal, s.continuous.data(), cOffsets, s.continuousTotal, s.dt,
+                                              s.demonstrated.data(), actions.data(), results.data())
+            : verve_batch_update(batch(s.host), crowd.data(), n, s.rewards.data(), s.discrete.data(), dOffsets,
+                                 s.discreteTotal, s.continuous.data(), cOffsets, s.continuousTotal, s.dt, actions.data(),
+                                 results.data());
     VERVE_FUZZ_CHECK((r == VERVE_OK) == (verve_last_error()[0] == '\0'));
     if (r != VERVE_OK) {
         VERVE_FUZZ_CHECK(a.steps() == before);
@@ -196,8 +213,14 @@ void batchStep(const Step& s, World& a, World& b) {
         // An agent that reads no values may have any offset: no pointer is formed from it.
         const int32_t* discrete = s.numDiscrete[i] == 0 ? nullptr : s.discrete.data() + atDiscrete;
         const float* continuous = s.numContinuous[i] == 0 ? nullptr : s.continuous.data() + atContinuous;
-        VERVE_FUZZ_CHECK(verve_agent_update(b.members[s.entries[i]], s.rewards[i], discrete, s.numDiscrete[i], continuous,
-                                            s.numContinuous[i], s.dt, &action) == VERVE_OK);
+        if (s.demonstrates && s.demonstrated[i] != VERVE_AGENT_CHOOSES) {
+            action = s.demonstrated[i];
+            VERVE_FUZZ_CHECK(verve_agent_update_demonstrated(b.members[s.entries[i]], s.rewards[i], discrete, s.numDiscrete[i],
+                                                             continuous, s.numContinuous[i], s.dt, nullptr, 0, action) == VERVE_OK);
+        } else {
+            VERVE_FUZZ_CHECK(verve_agent_update(b.members[s.entries[i]], s.rewards[i], discrete, s.numDiscrete[i], continuous,
+                                                s.numContinuous[i], s.dt, &action) == VERVE_OK);
+        }
         VERVE_FUZZ_CHECK(action == actions[i]);
         atDiscrete += s.numDiscrete[i];
         atContinuous += s.numContinuous[i];

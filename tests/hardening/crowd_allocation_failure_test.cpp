@@ -317,6 +317,12 @@ public:
             }
             uint32_t actions[kCrowd];
             for (auto& res : results) res = VERVE_ERROR_INTERNAL;
+            if (k % 3 == 2) {  // every third step, some agents are shown what to do
+                uint32_t demonstrated[kCrowd];
+                for (uint32_t a = 0; a < kCrowd; ++a) demonstrated[a] = a % 2 == 0 ? (k + a) % 3 : VERVE_AGENT_CHOOSES;
+                return verve_batch_update_demonstrated(batch_, agents_.data(), kCrowd, rewards, discrete, nullptr, kCrowd,
+                                                       continuous, nullptr, 2 * kCrowd, 0.1f, demonstrated, actions, results);
+            }
             return verve_batch_update(batch_, agents_.data(), kCrowd, rewards, discrete, nullptr, kCrowd, continuous,
                                       nullptr, 2 * kCrowd, 0.1f, actions, results);
         }
