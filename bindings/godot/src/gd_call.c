@@ -9,6 +9,7 @@
 const char vg_agent_class[] = "VerveAgent";
 const char vg_brain_class[] = "VerveBrain";
 const char vg_batch_class[] = "VerveBatch";
+const char vg_recording_class[] = "VerveRecording";
 
 int vg_begin_class(vg_call* c, const char* class_name, char* last_error, const char* method, int argc,
                    godot_variant** argv, int min_args, int max_args) {
@@ -180,6 +181,7 @@ const char* vg_describe(const godot_variant* v) {
     if (tag == (const void*)vg_agent_class) return "a VerveAgent"; /* not asked for: it would have matched */
     if (tag == (const void*)vg_brain_class) return "a VerveBrain";
     if (tag == (const void*)vg_batch_class) return "a VerveBatch";
+    if (tag == (const void*)vg_recording_class) return "a VerveRecording";
     return "an object of another class or library";
 }
 

@@ -1,7 +1,7 @@
-/* gd_call.h - one call from GDScript into a method of VerveAgent, VerveBrain or VerveBatch: its
- * arguments, read and checked, and its error, printed as a Godot error and kept for the instance's
- * get_last_error(). Every reader returns 0 after reporting what was wrong, so a method can stop at
- * the first failure. */
+/* gd_call.h - one call from GDScript into a method of VerveAgent, VerveBrain, VerveBatch or
+ * VerveRecording: its arguments, read and checked, and its error, printed as a Godot error and kept
+ * for the instance's get_last_error(). Every reader returns 0 after reporting what was wrong, so a
+ * method can stop at the first failure. */
 #ifndef VERVE_GD_CALL_H
 #define VERVE_GD_CALL_H
 
@@ -19,6 +19,7 @@
 extern const char vg_agent_class[]; /* "VerveAgent" */
 extern const char vg_brain_class[]; /* "VerveBrain" */
 extern const char vg_batch_class[]; /* "VerveBatch" */
+extern const char vg_recording_class[]; /* "VerveRecording" */
 
 typedef struct vg_agent {
     verve_agent* handle;            /* NULL before create()/load() and after close() */

@@ -1,12 +1,14 @@
 /* verve_godot.c - the GDNative entry points: Godot calls godot_gdnative_init when it loads the
- * library and godot_nativescript_init to learn its classes. Three classes, each a Reference (freed,
+ * library and godot_nativescript_init to learn its classes. Four classes, each a Reference (freed,
  * with what it holds, when the last reference goes): VerveAgent (verve_agent_methods.c),
- * VerveBrain (verve_brain_methods.c) and VerveBatch (verve_batch_methods.c). */
+ * VerveBrain (verve_brain_methods.c), VerveBatch (verve_batch_methods.c) and VerveRecording
+ * (verve_recording_methods.c). */
 #include <stdlib.h>
 
 #include "verve_agent_methods.h"
 #include "verve_batch_methods.h"
 #include "verve_brain_methods.h"
+#include "verve_recording_methods.h"
 #include "verve_warnings.h"
 
 typedef godot_variant (*vg_method_fn)(godot_object*, void*, void*, int, godot_variant**);
@@ -62,6 +64,11 @@ static const vg_method_info vg_agent_methods[] = {
       {"continuous", GODOT_VARIANT_TYPE_POOL_REAL_ARRAY},
       {"dt", GODOT_VARIANT_TYPE_REAL},
       {"action", GODOT_VARIANT_TYPE_INT}}},
+    {"replay", vg_replay,
+     "Every entry of a VerveRecording into the agent, in order, as demonstrated steps and trial ends; the agent "
+     "must have the recording's sensors and actions (else nothing is replayed). -> bool",
+     1,
+     {{"recording", GODOT_VARIANT_TYPE_OBJECT}}},
     {"teach", vg_teach,
      "A teacher's judgement in [-1, 1] (1 good, -1 bad) of what the agent did over the last 2.5 s; not a reward. "
      "The agent remembers its acts from its first judgement on (0 arms it). -> bool",
@@ -155,6 +162,39 @@ static const vg_method_info vg_batch_methods[] = {
      0, {{0}}},
 };
 
+static const vg_method_info vg_recording_methods[] = {
+    {"create", vg_recording_create,
+     "An empty recording with the sensors and actions of a VerveAgent (docs/teaching.md, \"Recordings\"). -> bool",
+     1, {{"agent", GODOT_VARIANT_TYPE_OBJECT}}},
+    {"add_step", vg_recording_add_step,
+     "Records a demonstrated step as VerveAgent.update_demonstrated() takes it; a refused one is not recorded. "
+     "-> bool",
+     5,
+     {{"reward", GODOT_VARIANT_TYPE_REAL},
+      {"discrete", GODOT_VARIANT_TYPE_POOL_INT_ARRAY},
+      {"continuous", GODOT_VARIANT_TYPE_POOL_REAL_ARRAY},
+      {"dt", GODOT_VARIANT_TYPE_REAL},
+      {"action", GODOT_VARIANT_TYPE_INT}}},
+    {"add_end_episode", vg_recording_add_end_episode, "Records the end of a trial with its final reward. -> bool", 1,
+     {{"final_reward", GODOT_VARIANT_TYPE_REAL}}},
+    {"add_truncation", vg_recording_add_truncation, "Records a trial cut off at a time limit. -> bool", 1,
+     {{"reward", GODOT_VARIANT_TYPE_REAL}}},
+    {"get_size", vg_recording_get_size, "Entries (steps and trial ends) so far. -> int (-1 on error)", 0, {{0}}},
+    {"save", vg_recording_save, "Saves the recording to a file (res://, user:// or a path), atomically. -> bool", 1,
+     {{"path", GODOT_VARIANT_TYPE_STRING}}},
+    {"save_bytes", vg_recording_save_bytes, "The recording's save as bytes (null on error). -> PoolByteArray", 0,
+     {{0}}},
+    {"load", vg_recording_load, "Replaces the recording with one loaded from a file. -> bool", 1,
+     {{"path", GODOT_VARIANT_TYPE_STRING}}},
+    {"load_bytes", vg_recording_load_bytes, "Replaces the recording with one loaded from save_bytes() data. -> bool",
+     1, {{"data", GODOT_VARIANT_TYPE_POOL_BYTE_ARRAY}}},
+    {"has_recording", vg_recording_has_recording,
+     "Whether a recording was created or loaded (and not closed). -> bool", 0, {{0}}},
+    {"close", vg_recording_close, "Frees the recording now instead of with the last reference.", 0, {{0}}},
+    {"get_last_error", vg_recording_get_last_error,
+     "The error of the latest failed call, \"\" after a success. -> String", 0, {{0}}},
+};
+
 typedef struct vg_class_info {
     const char* name; /* one of the vg_*_class names: its address is the class's type tag */
     const vg_method_info* methods;
@@ -168,6 +208,8 @@ static const vg_class_info vg_classes[] = {
     {vg_agent_class, vg_agent_methods, VG_COUNT(vg_agent_methods), sizeof(vg_agent), vg_agent_destroy},
     {vg_brain_class, vg_brain_methods, VG_COUNT(vg_brain_methods), sizeof(vg_brain), vg_brain_destroy},
     {vg_batch_class, vg_batch_methods, VG_COUNT(vg_batch_methods), sizeof(vg_batch), vg_batch_destroy},
+    {vg_recording_class, vg_recording_methods, VG_COUNT(vg_recording_methods), sizeof(vg_recording),
+     vg_recording_destroy},
 };
 
 static void* vg_construct(godot_object* object, void* method_data) {
