@@ -1,5 +1,5 @@
-// The Godot binding's save to memory (vg_save_to_bytes, behind VerveAgent.save_bytes() and
-// VerveBrain.save_bytes()) against a stand-in for Godot's API: a PoolByteArray that cannot grow
+// The Godot binding's save to memory (vg_save_to_bytes, behind VerveAgent.save_bytes(),
+// VerveBrain.save_bytes() and VerveRecording.save_bytes()) against a stand-in for Godot's API: a PoolByteArray that cannot grow
 // must be an error, never a wrong-sized array returned as success (issue 32), and every failing
 // allocation inside Verve during the save must be an error, never a crash. No engine needed.
 #include <gtest/gtest.h>
@@ -88,6 +88,9 @@ verve_result saveAgent(const void* object, void* buffer, size_t* size) {
 verve_result saveBrain(const void* object, void* buffer, size_t* size) {
     return verve_brain_save_memory(static_cast<const verve_brain*>(object), buffer, size);
 }
+verve_result saveRecording(const void* object, void* buffer, size_t* size) {
+    return verve_recording_save_memory(static_cast<const verve_recording*>(object), buffer, size);
+}
 
 class SaveToBytes : public ::testing::Test {
 protected:
@@ -107,15 +110,18 @@ protected:
         d.planning = 1;
         ASSERT_EQ(verve_agent_create(&d, &agent_), VERVE_OK);
         ASSERT_EQ(verve_brain_create(&d, &brain_), VERVE_OK);
+        ASSERT_EQ(verve_recording_create(agent_, &recording_), VERVE_OK) << verve_last_error();
         for (int i = 0; i < 40; ++i) {
             const float c[2] = {static_cast<float>(i % 7) / 7.0f, static_cast<float>(i % 5) / 5.0f};
             uint32_t action = 0;
             ASSERT_EQ(verve_agent_update(agent_, i % 6 == 0 ? 1.0f : 0.0f, nullptr, 0, c, 2, 0.1f, &action), VERVE_OK);
+            ASSERT_EQ(verve_recording_add_step(recording_, 0.0f, nullptr, 0, c, 2, 0.1f, action), VERVE_OK);
         }
     }
     void TearDown() override {
         verve_agent_destroy(agent_);
         verve_brain_destroy(brain_);
+        verve_recording_destroy(recording_);
         EXPECT_EQ(verve_set_hooks(nullptr), VERVE_OK) << verve_last_error();
     }
     // vg_save_to_bytes as a method would call it: the bytes, or "" and the error.
@@ -134,6 +140,7 @@ protected:
     Allocator allocator_;
     verve_agent* agent_ = nullptr;
     verve_brain* brain_ = nullptr;
+    verve_recording* recording_ = nullptr;
 };
 
 std::vector<std::uint8_t> direct(vg_save_memory_fn fn, const void* object) {
@@ -155,11 +162,15 @@ TEST_F(SaveToBytes, AnArrayThatCannotGrowIsAnErrorNotAWrongSizedSave) {
     EXPECT_NE(error.find("out of memory"), std::string::npos) << error;
     EXPECT_FALSE(save(saveBrain, brain_, bytes, error));
     EXPECT_NE(error.find("out of memory"), std::string::npos) << error;
+    EXPECT_FALSE(save(saveRecording, recording_, bytes, error));
+    EXPECT_NE(error.find("out of memory"), std::string::npos) << error;
 }
 
 TEST_F(SaveToBytes, EveryFailedAllocationIsAnErrorAndTheNextSaveWorks) {
-    for (const auto fn : {saveAgent, saveBrain}) {
-        const void* object = fn == saveAgent ? static_cast<const void*>(agent_) : static_cast<const void*>(brain_);
+    for (const auto fn : {saveAgent, saveBrain, saveRecording}) {
+        const void* object = fn == saveAgent   ? static_cast<const void*>(agent_)
+                             : fn == saveBrain ? static_cast<const void*>(brain_)
+                                               : static_cast<const void*>(recording_);
         const std::vector<std::uint8_t> reference = direct(fn, object);
         allocator_.count = 0;
         std::vector<std::uint8_t> bytes;
@@ -182,7 +193,10 @@ TEST_F(SaveToBytes, EveryFailedAllocationIsAnErrorAndTheNextSaveWorks) {
             ASSERT_TRUE(save(fn, object, bytes, error)) << "N=" << n << " then: " << error;
             ASSERT_EQ(bytes, reference) << "N=" << n;
         }
-        RecordProperty(fn == saveAgent ? "agentSaveAllocations" : "brainSaveAllocations", static_cast<int>(total));
+        RecordProperty(fn == saveAgent   ? "agentSaveAllocations"
+                       : fn == saveBrain ? "brainSaveAllocations"
+                                         : "recordingSaveAllocations",
+                       static_cast<int>(total));
     }
 }
 
