@@ -14,6 +14,8 @@
 -- --shown N     the teacher takes the controls for the first N trials (default 0)
 -- --praise      for the first 40 trials the teacher clicks "good" half a second after the pet sits on
 --               the ball and "bad" after it sits anywhere else
+-- --curve N     play exactly N trials and print each as "trial,<n>,<steps>,<1 if the trick was done>"
+--               (scripts/teaching_curves.sh plots them)
 local base = love.filesystem.getSourceBaseDirectory()
 package.cpath = base .. "/?.so;" .. base .. "/?.dll;" .. package.cpath
 local verve = require "verve"
@@ -24,6 +26,7 @@ local MOVES = { [NORTH] = { 0, -1 }, [EAST] = { 1, 0 }, [SOUTH] = { 0, 1 }, [WES
 local PRAISE_DELAY, PRAISE_TRIALS = 0.5, 40
 
 local options = { seed = 1, shown = 0, max_trials = 2000 }
+local curve = nil                     -- --curve: each trial's steps and outcome, printed at the end
 local pet, ball, rng, agent
 local trial, trial_steps, trial_shortest, reward, treats = 1, 0, 0, 0, 0
 local in_a_row, learned_at = 0, nil
@@ -53,6 +56,7 @@ end
 
 local function end_trial(done)
   if done then agent:end_episode(1); treats = treats + 1 else agent:truncate_episode(0) end
+  if curve then curve[#curve + 1] = { steps = trial_steps, done = done } end
   local alone = trial > options.shown and held == nil
   in_a_row = (alone and done and trial_steps <= trial_shortest + 6) and in_a_row + 1 or 0
   if in_a_row == 5 and not learned_at then learned_at = trial end
@@ -98,17 +102,21 @@ function love.load(args)
     elseif a == "--praise" then options.praise = true
     elseif a == "--seed" then options.seed = tonumber(args[i + 1])
     elseif a == "--shown" then options.shown = tonumber(args[i + 1])
-    elseif a == "--max-trials" then options.max_trials = tonumber(args[i + 1]) end
+    elseif a == "--max-trials" then options.max_trials = tonumber(args[i + 1])
+    elseif a == "--curve" then options.curve = tonumber(args[i + 1]) end
   end
   rng = love.math.newRandomGenerator(options.seed)
   agent = verve.agent { continuous = 2, actions = 5, seed = options.seed }
   agent:teach(0) -- remember what it does, for the player's (or the script's) praise
   new_trial()
   if options.headless then
-    while not learned_at and trial <= options.max_trials do
+    if options.curve then curve = {} end
+    local last = options.curve or options.max_trials
+    while (options.curve or not learned_at) and trial <= last do
       step()
       deliver_clicks()
     end
+    for n, t in ipairs(curve or {}) do print(("trial,%d,%d,%d"):format(n, t.steps, t.done and 1 or 0)) end
     print(("pet seed %d, shown %d trials%s: learned the trick after %s trials, %d treats"):format(options.seed,
       options.shown, options.praise and ", praised" or "", learned_at and tostring(learned_at) or
       ("more than " .. options.max_trials), treats))
