@@ -87,7 +87,8 @@ VG_METHOD(save_bytes) {
 /* Most actions an agent may have (the library's limit): a mask is read onto the stack. */
 #define VG_MAX_ACTIONS 4096
 
-/* update, update_masked and update_demonstrated: argv is (reward, discrete, continuous, dt[, mask or action]). */
+/* update, update_masked and update_demonstrated: argv is (reward, discrete, continuous, dt), then
+ * update_masked's mask, or update_demonstrated's action and optional mask. */
 enum { VG_PLAIN, VG_MASKED, VG_DEMONSTRATED };
 static godot_variant vg_step(void* user_data, const char* method, int argc, godot_variant** argv, int kind) {
     vg_call c;
@@ -100,18 +101,21 @@ static godot_variant vg_step(void* user_data, const char* method, int argc, godo
     uint32_t n_discrete = 0, n_continuous = 0, n_mask = 0, action = 0, i;
     int64_t shown = 0;
     const int extra = kind == VG_PLAIN ? 0 : 1;
-    if (!vg_begin(&c, user_data, method, argc, argv, 4 + extra, 4 + extra) || !vg_agent_handle(&c, &a) ||
+    const int masked = kind == VG_MASKED || (kind == VG_DEMONSTRATED && argc == 6); /* the mask's argument */
+    const int mask_arg = kind == VG_MASKED ? 4 : 5;
+    if (!vg_begin(&c, user_data, method, argc, argv, 4 + extra, 4 + extra + (kind == VG_DEMONSTRATED)) ||
+        !vg_agent_handle(&c, &a) ||
         !vg_arg_float(&c, 0, "reward", &reward) ||
         !vg_read_ints(&c, argv[1], "discrete", discrete, VERVE_MAX_DISCRETE_SENSORS, &n_discrete) ||
         !vg_read_floats(&c, argv[2], "continuous", continuous, VERVE_MAX_CONTINUOUS_SENSORS, &n_continuous) ||
         !vg_arg_float(&c, 3, "dt", &dt) ||
-        (kind == VG_MASKED && !vg_read_ints(&c, argv[4], "mask", flags, VG_MAX_ACTIONS, &n_mask)) ||
+        (masked && !vg_read_ints(&c, argv[mask_arg], "mask", flags, VG_MAX_ACTIONS, &n_mask)) ||
         (kind == VG_DEMONSTRATED && !vg_arg_type(&c, 4, "action", GODOT_VARIANT_TYPE_INT)))
         return kind == VG_DEMONSTRATED ? vg_variant_bool(0) : vg_variant_int(-1);
     for (i = 0; i < n_mask; ++i) {
         if (flags[i] != 0 && flags[i] != 1) {
             vg_fail(&c, "mask[%u] must be 0 or 1 (got %d)", i, (int)flags[i]);
-            return vg_variant_int(-1);
+            return kind == VG_DEMONSTRATED ? vg_variant_bool(0) : vg_variant_int(-1);
         }
         mask[i] = (uint8_t)flags[i];
     }
@@ -122,7 +126,8 @@ static godot_variant vg_step(void* user_data, const char* method, int argc, godo
             return vg_variant_bool(0);
         }
         return vg_variant_bool(vg_check(&c, verve_agent_update_demonstrated(a, reward, discrete, n_discrete, continuous,
-                                                                            n_continuous, dt, NULL, 0, (uint32_t)shown)));
+                                                                            n_continuous, dt, masked ? mask : NULL,
+                                                                            masked ? n_mask : 0, (uint32_t)shown)));
     }
     if (!vg_check(&c, kind == VG_MASKED ? verve_agent_update_masked(a, reward, discrete, n_discrete, continuous,
                                                                     n_continuous, dt, mask, n_mask, &action)

@@ -18,7 +18,7 @@ typedef struct vg_arg_info {
     godot_variant_type type;
 } vg_arg_info;
 
-#define VG_MAX_ARGS 5 /* the most any method takes (update_masked, VerveBatch.update) */
+#define VG_MAX_ARGS 6 /* the most any method takes (update_demonstrated with its mask) */
 
 typedef struct vg_method_info {
     const char* name;
@@ -57,13 +57,14 @@ static const vg_method_info vg_agent_methods[] = {
       {"mask", GODOT_VARIANT_TYPE_POOL_INT_ARRAY}}},
     {"update_demonstrated", vg_update_demonstrated,
      "A demonstrated step (docs/teaching.md): as update(), but the player or a scripted AI took `action`; the agent "
-     "learns from it and is pulled towards it. -> bool",
-     5,
+     "learns from it and is pulled towards it. The optional mask (one 0/1 per action) must allow `action`. -> bool",
+     6,
      {{"reward", GODOT_VARIANT_TYPE_REAL},
       {"discrete", GODOT_VARIANT_TYPE_POOL_INT_ARRAY},
       {"continuous", GODOT_VARIANT_TYPE_POOL_REAL_ARRAY},
       {"dt", GODOT_VARIANT_TYPE_REAL},
-      {"action", GODOT_VARIANT_TYPE_INT}}},
+      {"action", GODOT_VARIANT_TYPE_INT},
+      {"mask", GODOT_VARIANT_TYPE_POOL_INT_ARRAY}}},
     {"replay", vg_replay,
      "Every entry of a VerveRecording into the agent, in order, as demonstrated steps and trial ends; the agent "
      "must have the recording's sensors and actions (else nothing is replayed). -> bool",

@@ -150,6 +150,9 @@ func test_episode_learning_readouts():
 	check_error(a, a.update_demonstrated(0.0, [2], [0.5, 0.5], 0.1, 3), false, "out of range", "a demonstrated action out of range")
 	check_error(a, a.update_demonstrated(0.0, [2], [0.5, 0.5], 0.1, -1), false, "action must be 0 .. actions-1", "a negative demonstrated action")
 	check_error(a, a.update_demonstrated(0.0, [2], [0.5, 0.5], 0.1, 1.5), false, "action must be an int", "a demonstrated action that is not an int")
+	check(a.update_demonstrated(0.0, [2], [0.5, 0.5], 0.1, 2, [0, 0, 1]), "a demonstrated step under a mask")
+	check_error(a, a.update_demonstrated(0.0, [2], [0.5, 0.5], 0.1, 0, [0, 1, 1]), false, "forbids", "a demonstrated action the mask forbids")
+	check_error(a, a.update_demonstrated(0.0, [2], [0.5, 0.5], 0.1, 0, [1, 2, 1]), false, "mask[1] must be 0 or 1", "a bad mask flag")
 	check(a.teach(0.0) and a.teach(1.0), "a teacher's judgements")
 	check_error(a, a.teach(1.5), false, "[-1, 1]", "praise beyond [-1, 1]")
 	a.greedy = "yes"
