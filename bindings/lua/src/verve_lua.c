@@ -45,6 +45,7 @@ typedef struct lv_batch {
     int32_t* discrete;   /* VERVE_MAX_DISCRETE_SENSORS per agent */
     float* continuous;   /* VERVE_MAX_CONTINUOUS_SENSORS per agent */
     uint32_t* actions;
+    uint32_t* demonstrated; /* batch:update's optional demonstrated actions (0-based, VERVE_AGENT_CHOOSES) */
 } lv_batch;
 
 /* ---- errors and conversions ------------------------------------------------------------- */
@@ -844,6 +845,8 @@ static void lv_batch_free_arrays(lv_batch* b) {
     free(b->discrete);
     free(b->continuous);
     free(b->actions);
+    free(b->demonstrated);
+    b->demonstrated = NULL;
     b->agents = NULL;
     b->rewards = NULL;
     b->discrete = NULL;
@@ -883,16 +886,19 @@ static void lv_batch_reserve(lua_State* L, lv_batch* b, uint32_t n) {
     b->discrete = (int32_t*)malloc((size_t)n * VERVE_MAX_DISCRETE_SENSORS * sizeof *b->discrete);
     b->continuous = (float*)malloc((size_t)n * VERVE_MAX_CONTINUOUS_SENSORS * sizeof *b->continuous);
     b->actions = (uint32_t*)malloc(n * sizeof *b->actions);
-    if (!b->agents || !b->rewards || !b->discrete || !b->continuous || !b->actions) {
+    b->demonstrated = (uint32_t*)malloc(n * sizeof *b->demonstrated);
+    if (!b->agents || !b->rewards || !b->discrete || !b->continuous || !b->actions || !b->demonstrated) {
         lv_batch_free_arrays(b);
         luaL_error(L, "verve: update: out of memory for %d agents", (int)n);
     }
     b->capacity = n;
 }
 
-/* batch:update(agents, rewards, observations, dt [, actions]): agents[i] gets rewards[i] and
+/* batch:update(agents, rewards, observations, dt [, actions [, demonstrated]]): agents[i] gets rewards[i] and
  * observations[i] (as agent:update takes them); returns the actions (written into `actions` when
- * given, so a game loop allocates nothing). Any bad input refuses the whole call. */
+ * given, so a game loop allocates nothing). `demonstrated[i]`, when given, is the action (from 1) the
+ * host took for agents[i] (agent:update_demonstrated), or false for the agent's own choice. Any bad
+ * input refuses the whole call. */
 static int lv_batch_update(lua_State* L) {
     lv_batch* b = lv_check_batch(L);
     float dt = lv_to_float(luaL_checknumber(L, 5));
@@ -927,13 +933,31 @@ static int lv_batch_update(lua_State* L) {
         nd += o.n_discrete;
         nc += o.n_continuous;
     }
-    r = verve_batch_update(b->handle, b->agents, n, b->rewards, b->discrete, NULL, nd, b->continuous, NULL, nc, dt,
-                           b->actions, NULL);
+    if (!lua_isnoneornil(L, 7)) {
+        luaL_checktype(L, 7, LUA_TTABLE);
+        for (i = 0; i < n; ++i) {
+            uint32_t action = 0;
+            lua_rawgeti(L, 7, (int)i + 1);
+            if (lua_isnil(L, -1) || (lua_isboolean(L, -1) && !lua_toboolean(L, -1))) {
+                b->demonstrated[i] = VERVE_AGENT_CHOOSES;
+            } else if (lv_get_u32(L, -1, &action) && action > 0) {
+                b->demonstrated[i] = action - 1;
+            } else {
+                luaL_error(L, "verve: update: demonstrated[%d] must be an action from 1, or false (got %s)", (int)i + 1,
+                           luaL_typename(L, -1));
+            }
+            lua_pop(L, 1);
+        }
+        r = verve_batch_update_demonstrated(b->handle, b->agents, n, b->rewards, b->discrete, NULL, nd, b->continuous,
+                                            NULL, nc, dt, b->demonstrated, b->actions, NULL);
+    } else {
+        r = verve_batch_update(b->handle, b->agents, n, b->rewards, b->discrete, NULL, nd, b->continuous, NULL, nc, dt,
+                               b->actions, NULL);
+    }
     if (r != VERVE_OK) return lv_fail_indexed(L, "update", r);
     if (lua_istable(L, 6)) {
-        lua_settop(L, 6);
+        lua_pushvalue(L, 6);
     } else {
-        lua_settop(L, 5);
         lua_createtable(L, (int)n, 0);
     }
     for (i = 0; i < n; ++i) {

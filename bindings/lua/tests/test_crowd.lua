@@ -130,3 +130,30 @@ T.check("a brain's binary save loads as a brain and as an agent, an agent's as a
   brain:close()
   T.expect_error("the brain is closed", brain.save_binary_string, brain)
 end)
+
+T.check("a batch with demonstrated actions gives the steps of update_demonstrated and update in order", function()
+  local solo, batched = crowd(), crowd()
+  local batch = verve.batch { workers = 2 }
+  local actions = {}
+  for step = 1, 40 do
+    local obs, rewards = observations(solo, step)
+    local shown = { false, step % 2 + 1, false, 1, false }  -- agent 2 and body 4 are shown; body 5 alone
+    local expected = {}
+    for i, a in ipairs(solo) do
+      if shown[i] then
+        a:update_demonstrated(rewards[i], obs[i], 0.1, shown[i])
+        expected[i] = shown[i]
+      else
+        expected[i] = a:update(rewards[i], obs[i], 0.1)
+      end
+    end
+    batch:update(batched, rewards, obs, 0.1, actions, shown)
+    for i = 1, #expected do assert(actions[i] == expected[i], ("step %d agent %d"):format(step, i)) end
+  end
+  for i = 1, #solo do assert(batched[i]:save_binary_string() == solo[i]:save_binary_string(), "agent " .. i) end
+  local obs, rewards = observations(solo, 1)
+  T.expect_error("demonstrated%[2%] must be an action from 1", function()
+    batch:update(batched, rewards, obs, 0.1, nil, { false, 0, false, false, false })
+  end)
+  T.expect_library_error("update", function() batch:update(batched, rewards, obs, 0.1, nil, { 9, false, false, false, false }) end)
+end)
