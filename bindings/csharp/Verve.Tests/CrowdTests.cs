@@ -69,6 +69,47 @@ namespace Verve.Tests
         }
 
         [Fact]
+        public void DemonstratedStepsInABatchEqualSingleCallsInOrder()
+        {
+            var (solo, soloBrain) = Crowd();
+            var (crowd, crowdBrain) = Crowd();
+            using var batch = new Batch(2);
+            var actions = new int[crowd.Length];
+            for (int step = 0; step < 40; step++)
+            {
+                var (rewards, discrete, continuous) = Inputs(solo, step);
+                int[] shown = { Batch.AgentChooses, step % 2, Batch.AgentChooses, 1, Batch.AgentChooses };
+                int d = 0, c = 0;
+                var expected = new int[solo.Length];
+                for (int i = 0; i < solo.Length; i++)
+                {
+                    int nd = solo[i].Options.DiscreteSensors.Count;
+                    if (shown[i] == Batch.AgentChooses)
+                    {
+                        expected[i] = solo[i].Update(rewards[i], discrete.AsSpan(d, nd), continuous.AsSpan(c, 2), TestAgents.Dt);
+                    }
+                    else
+                    {
+                        solo[i].UpdateDemonstrated(rewards[i], discrete.AsSpan(d, nd), continuous.AsSpan(c, 2), TestAgents.Dt, shown[i]);
+                        expected[i] = shown[i];
+                    }
+                    d += nd;
+                    c += 2;
+                }
+                batch.UpdateDemonstrated(crowd, rewards, discrete, continuous, TestAgents.Dt, shown, actions);
+                Assert.Equal(expected, actions);
+            }
+            for (int i = 0; i < solo.Length; i++) Assert.Equal(solo[i].SaveToBytes(), crowd[i].SaveToBytes());
+            var (r0, d0, c0) = Inputs(crowd, 0);
+            Assert.Throws<VerveException>(() => batch.UpdateDemonstrated(crowd, r0, d0, c0, TestAgents.Dt,
+                new[] { 7, Batch.AgentChooses, Batch.AgentChooses, Batch.AgentChooses, Batch.AgentChooses }, actions));
+            Assert.Throws<ArgumentException>(() => batch.UpdateDemonstrated(crowd, r0, d0, c0, TestAgents.Dt, new[] { 0 }, actions));
+            foreach (var a in solo.Concat(crowd)) a.Dispose();
+            soloBrain.Dispose();
+            crowdBrain.Dispose();
+        }
+
+        [Fact]
         public void BadInputRefusesTheWholeBatch()
         {
             var (crowd, brain) = Crowd();

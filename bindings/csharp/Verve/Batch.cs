@@ -46,7 +46,29 @@ namespace Verve
         /// <exception cref="VerveException">Any bad input (the message names the first bad agent): then no
         /// agent changed and no action was written.</exception>
         public unsafe void Update(Agent[] agents, ReadOnlySpan<float> rewards, ReadOnlySpan<int> discrete,
-            ReadOnlySpan<float> continuous, float dt, Span<int> actions, Span<ResultCode> results = default)
+            ReadOnlySpan<float> continuous, float dt, Span<int> actions, Span<ResultCode> results = default) =>
+            Step(agents, rewards, discrete, continuous, dt, null, actions, results);
+
+        /// <summary>In <see cref="UpdateDemonstrated"/>: the agent chooses its own action.</summary>
+        public const int AgentChooses = -1;
+
+        /// <summary>As <see cref="Update"/>, with demonstrated steps (docs/teaching.md): <c>demonstrated[i]</c> is the
+        /// action the player or a scripted AI took for agent i (as <see cref="Agent.UpdateDemonstrated"/> takes it, and
+        /// written back to <c>actions[i]</c>), or <see cref="AgentChooses"/> for the agent's own choice.</summary>
+        /// <exception cref="VerveException">As <see cref="Update"/>, or a demonstrated action out of range.</exception>
+        public unsafe void UpdateDemonstrated(Agent[] agents, ReadOnlySpan<float> rewards, ReadOnlySpan<int> discrete,
+            ReadOnlySpan<float> continuous, float dt, ReadOnlySpan<int> demonstrated, Span<int> actions,
+            Span<ResultCode> results = default)
+        {
+            if (agents != null && demonstrated.Length != agents.Length)
+                throw new ArgumentException($"{agents.Length} agents need as many demonstrated actions ({demonstrated.Length})");
+            // AgentChooses (-1) is VERVE_AGENT_CHOOSES (0xFFFFFFFF) as the library reads it.
+            fixed (int* shown = &MemoryMarshal.GetReference(demonstrated))
+                Step(agents!, rewards, discrete, continuous, dt, (uint*)shown, actions, results);
+        }
+
+        private unsafe void Step(Agent[] agents, ReadOnlySpan<float> rewards, ReadOnlySpan<int> discrete,
+            ReadOnlySpan<float> continuous, float dt, uint* demonstrated, Span<int> actions, Span<ResultCode> results)
         {
             if (agents == null) throw new ArgumentNullException(nameof(agents));
             if (rewards.Length != agents.Length || actions.Length != agents.Length)
@@ -74,8 +96,12 @@ namespace Verve
                 fixed (int* o = &MemoryMarshal.GetReference(actions))
                 fixed (ResultCode* v = &MemoryMarshal.GetReference(results))
                 {
-                    VerveException.ThrowIfFailed(NativeMethods.verve_batch_update(handle, a, (uint)agents.Length, r,
-                        d, null, (uint)discrete.Length, c, null, (uint)continuous.Length, dt, (uint*)o, results.Length == 0 ? null : v));
+                    VerveException.ThrowIfFailed(demonstrated == null
+                        ? NativeMethods.verve_batch_update(handle, a, (uint)agents.Length, r, d, null, (uint)discrete.Length,
+                            c, null, (uint)continuous.Length, dt, (uint*)o, results.Length == 0 ? null : v)
+                        : NativeMethods.verve_batch_update_demonstrated(handle, a, (uint)agents.Length, r, d, null,
+                            (uint)discrete.Length, c, null, (uint)continuous.Length, dt, demonstrated, (uint*)o,
+                            results.Length == 0 ? null : v));
                 }
             }
             finally

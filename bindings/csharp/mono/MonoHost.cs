@@ -299,6 +299,25 @@ static class MonoHost
             Expect<ObjectDisposedException>(() => { var unused = s_agent.Stats; });
         });
 
+        // A batch where one body is shown what to do: it answers with the shown action.
+        Check("Batch.UpdateDemonstrated(Agent[], ReadOnlySpan<Single>, ReadOnlySpan<Int32>, ReadOnlySpan<Single>, Single, " +
+              "ReadOnlySpan<Int32>, Span<Int32>, Span<ResultCode>)", () =>
+        {
+            var brain = new Brain(new AgentOptions { Actions = 3, Seed = 3 }.AddContinuousSensor());
+            Agent[] bodies = { brain.CreateBody(), brain.CreateBody() };
+            var batch = new Batch(2);
+            var actions = new int[2];
+            for (int i = 0; i < 10; ++i)
+            {
+                batch.UpdateDemonstrated(bodies, new[] { 0f, 0f }, ReadOnlySpan<int>.Empty, new[] { 0.1f * i, -0.1f * i }, 0.1f,
+                    new[] { 2, Batch.AgentChooses }, actions);
+                Require(actions[0] == 2 && actions[1] >= 0 && actions[1] < 3, "demonstrated batch actions " + actions[0] + "," + actions[1]);
+            }
+            batch.Dispose();
+            foreach (var b in bodies) b.Dispose();
+            brain.Dispose();
+        });
+
         // One brain, two bodies, a batch over both on 2 threads: the same actions as updating them in order.
         Check("Brain..ctor(AgentOptions); Brain.CreateBody(); Brain.get_RbfCount(); Batch..ctor(Int32); Batch.get_WorkerCount(); " +
               "Batch.Update(Agent[], ReadOnlySpan<Single>, ReadOnlySpan<Int32>, ReadOnlySpan<Single>, Single, Span<Int32>, Span<ResultCode>); " +

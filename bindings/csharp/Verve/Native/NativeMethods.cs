@@ -202,5 +202,10 @@ namespace Verve.Native
         internal static extern ResultCode verve_batch_update(BatchHandle batch, IntPtr* agents, uint n, float* rewards,
             int* discrete, uint* discreteOffsets, uint discreteTotal, float* continuous, uint* continuousOffsets,
             uint continuousTotal, float dt, uint* actions, ResultCode* results);
+
+        [DllImport(Library, CallingConvention = CallingConvention.Cdecl)]
+        internal static extern ResultCode verve_batch_update_demonstrated(BatchHandle batch, IntPtr* agents, uint n,
+            float* rewards, int* discrete, uint* discreteOffsets, uint discreteTotal, float* continuous,
+            uint* continuousOffsets, uint continuousTotal, float dt, uint* demonstrated, uint* actions, ResultCode* results);
     }
 }
