@@ -159,7 +159,8 @@ export class Batch {
   private constructor();
   readonly disposed: boolean;
   /** One step of every agent, as the same updates in array order; returns the actions. */
-  update(agents: Agent[], rewards: Numbers, observations: Array<Observation | null | undefined>, dt: number, out?: Uint32Array): Uint32Array;
+  update(agents: Agent[], rewards: Numbers, observations: Array<Observation | null | undefined>, dt: number, out?: Uint32Array,
+    demonstrated?: Array<number | null>): Uint32Array;
   dispose(): void;
 }
 

@@ -32,9 +32,11 @@ export class Batch {
 
   /**
    * One step of every agent: agents[i] earns rewards[i] and sees observations[i]. Returns the
-   * actions (into `out`, a Uint32Array, when given). On any bad input nothing changes.
+   * actions (into `out`, a Uint32Array, when given). `demonstrated`, when given, holds per agent the
+   * action the player or a scripted AI took (as Agent.updateDemonstrated takes it), or null for the
+   * agent's own choice (docs/teaching.md). On any bad input nothing changes.
    */
-  update(agents, rewards, observations, dt, out) {
+  update(agents, rewards, observations, dt, out, demonstrated) {
     if (this.handle === 0) throw invalidState('the batch is disposed');
     if (!Array.isArray(agents)) throw invalidArgument('batch.update: agents must be an array of agents');
     const n = agents.length;
@@ -49,6 +51,9 @@ export class Batch {
     if (out !== undefined && (!(out instanceof Uint32Array) || out.length < n)) {
       throw invalidArgument(`batch.update: out must be a Uint32Array of at least ${n} entries`);
     }
+    if (demonstrated !== undefined && (!Array.isArray(demonstrated) || demonstrated.length !== n)) {
+      throw invalidArgument(`batch.update: demonstrated must be an array of ${n} actions or nulls`);
+    }
     let nd = 0;
     let nc = 0;
     const checked = new Array(n);
@@ -58,23 +63,30 @@ export class Batch {
       if (agent.disposed) throw invalidState(`batch.update: agents[${i}] is disposed`);
       checkNumber(`rewards[${i}]`, rewards[i]);
       checked[i] = checkObservation(`observations[${i}]`, observations[i]);
+      const shown = demonstrated === undefined ? null : demonstrated[i];
+      if (shown !== null && (!Number.isInteger(shown) || shown < 0 || shown >= agent.numActions)) {
+        throw invalidArgument(`batch.update: demonstrated[${i}] must be an action in 0..${agent.numActions - 1} or null`);
+      }
       nd += checked[i].discrete.length;
       nc += checked[i].continuous.length;
     }
     const rt = this.rt;
-    const [a, r, d, c, actions, results] = rt.carve([4 * n, 4 * n, 4 * nd, 4 * nc, 4 * n, 4 * n]);
+    const [a, r, d, c, actions, results, shown] = rt.carve([4 * n, 4 * n, 4 * nd, 4 * nc, 4 * n, 4 * n, 4 * n]);
     const { u32, i32, f32 } = rt.heap;
     let di = d >> 2;
     let ci = c >> 2;
     for (let i = 0; i < n; ++i) {
       u32[(a >> 2) + i] = agents[i].handle;
+      if (demonstrated !== undefined) u32[(shown >> 2) + i] = demonstrated[i] === null ? 0xffffffff : demonstrated[i];
       f32[(r >> 2) + i] = rewards[i];
       i32.set(checked[i].discrete, di);
       f32.set(checked[i].continuous, ci);
       di += checked[i].discrete.length;
       ci += checked[i].continuous.length;
     }
-    rt.check(rt.m._verve_batch_update(this.handle, a, n, r, d, 0, nd, c, 0, nc, dt, actions, results));
+    rt.check(demonstrated === undefined
+      ? rt.m._verve_batch_update(this.handle, a, n, r, d, 0, nd, c, 0, nc, dt, actions, results)
+      : rt.m._verve_batch_update_demonstrated(this.handle, a, n, r, d, 0, nd, c, 0, nc, dt, shown, actions, results));
     const view = rt.heap.u32.subarray(actions >> 2, (actions >> 2) + n);
     if (out) {
       out.set(view);

@@ -82,3 +82,31 @@ test('brains: bodies learn into one brain, and a batch does exactly what updates
   copy.dispose();
   batch.dispose();
 });
+
+test('a batch with demonstrated actions does what updateDemonstrated and update in order do', () => {
+  const make = () => {
+    const brain = verve.createBrain({ continuous: 2, actions: 3, seed: 3 });
+    return { brain, bodies: [brain.createBody(), brain.createBody(), brain.createBody()] };
+  };
+  const a = make();
+  const b = make();
+  const batch = verve.createBatch();
+  const obs = (i, t) => ({ continuous: [Math.sin(t * 0.1 + i), Math.cos(t * 0.07 - i)] });
+  for (let t = 0; t < 60; ++t) {
+    const rewards = [0.1, -0.2, 0.3];
+    const shown = [null, t % 3, null];
+    const one = a.bodies.map((body, i) => {
+      if (shown[i] === null) return body.update(rewards[i], obs(i, t), 0.05);
+      body.updateDemonstrated(rewards[i], obs(i, t), 0.05, shown[i]);
+      return shown[i];
+    });
+    const many = batch.update(b.bodies, rewards, b.bodies.map((_, i) => obs(i, t)), 0.05, undefined, shown);
+    assert.deepEqual(Array.from(many), one, `step ${t}`);
+  }
+  assert.deepEqual(a.brain.saveBinaryBytes(), b.brain.saveBinaryBytes());
+  assert.throws(() => batch.update(b.bodies, [0, 0, 0], b.bodies.map((_, i) => obs(i, 0)), 0.05, undefined, [3, null, null]),
+    /demonstrated\[0\]/);
+  assert.throws(() => batch.update(b.bodies, [0, 0, 0], b.bodies.map((_, i) => obs(i, 0)), 0.05, undefined, [null]), /demonstrated/);
+  for (const x of [a, b]) { for (const body of x.bodies) body.dispose(); x.brain.dispose(); }
+  batch.dispose();
+});
