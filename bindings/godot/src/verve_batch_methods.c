@@ -107,12 +107,17 @@ static int vg_read_agents(vg_call* c, vg_batch* self, const godot_array* list, u
     return 1;
 }
 
-/* Steps the checked agents: the pool arrays are read in place and the actions written in place. */
+/* Steps the checked agents: the pool arrays are read in place and the actions written in place.
+ * With argument 5 (demonstrated: one action per agent, -1 for the agent's own choice, which is
+ * VERVE_AGENT_CHOOSES read as unsigned) the call is verve_batch_update_demonstrated. */
 static godot_variant vg_run(vg_call* c, vg_batch* self, uint32_t n, float dt) {
     godot_pool_real_array rewards, continuous;
-    godot_pool_int_array discrete, actions;
+    godot_pool_int_array discrete, actions, shown;
     godot_pool_real_array_read_access *rewards_read, *continuous_read = NULL;
-    godot_pool_int_array_read_access* discrete_read = NULL;
+    godot_pool_int_array_read_access *discrete_read = NULL, *shown_read = NULL;
+    const int32_t* discrete_ptr;
+    const float* continuous_ptr;
+    uint32_t* actions_ptr;
     godot_pool_int_array_write_access* actions_write;
     uint32_t n_discrete = 0, n_continuous = 0;
     godot_variant out;
@@ -132,15 +137,26 @@ static godot_variant vg_run(vg_call* c, vg_batch* self, uint32_t n, float dt) {
     vg_core->godot_pool_int_array_new(&actions);
     vg_core->godot_pool_int_array_resize(&actions, (godot_int)n);
     actions_write = vg_core->godot_pool_int_array_write(&actions);
-    ok = vg_check(c, verve_batch_update(
-                         self->handle, self->agents, n, vg_core->godot_pool_real_array_read_access_ptr(rewards_read),
-                         discrete_read ? (const int32_t*)vg_core->godot_pool_int_array_read_access_ptr(discrete_read)
-                                       : NULL,
-                         NULL, n_discrete,
-                         continuous_read ? vg_core->godot_pool_real_array_read_access_ptr(continuous_read) : NULL,
-                         NULL, n_continuous, dt,
-                         (uint32_t*)vg_core->godot_pool_int_array_write_access_ptr(actions_write), NULL));
+    if (c->argc > 5) {
+        shown = vg_core->godot_variant_as_pool_int_array(c->argv[5]);
+        shown_read = vg_core->godot_pool_int_array_read(&shown);
+    }
+    discrete_ptr = discrete_read ? (const int32_t*)vg_core->godot_pool_int_array_read_access_ptr(discrete_read) : NULL;
+    continuous_ptr = continuous_read ? vg_core->godot_pool_real_array_read_access_ptr(continuous_read) : NULL;
+    actions_ptr = (uint32_t*)vg_core->godot_pool_int_array_write_access_ptr(actions_write);
+    ok = vg_check(c, shown_read
+        ? verve_batch_update_demonstrated(self->handle, self->agents, n,
+                                          vg_core->godot_pool_real_array_read_access_ptr(rewards_read), discrete_ptr,
+                                          NULL, n_discrete, continuous_ptr, NULL, n_continuous, dt,
+                                          (const uint32_t*)vg_core->godot_pool_int_array_read_access_ptr(shown_read),
+                                          actions_ptr, NULL)
+        : verve_batch_update(self->handle, self->agents, n, vg_core->godot_pool_real_array_read_access_ptr(rewards_read),
+                             discrete_ptr, NULL, n_discrete, continuous_ptr, NULL, n_continuous, dt, actions_ptr, NULL));
     vg_core->godot_pool_int_array_write_access_destroy(actions_write);
+    if (shown_read) {
+        vg_core->godot_pool_int_array_read_access_destroy(shown_read);
+        vg_core->godot_pool_int_array_destroy(&shown);
+    }
     if (ok) vg_core->godot_variant_new_pool_int_array(&out, &actions);
     else out = vg_variant_nil();
     vg_core->godot_pool_int_array_destroy(&actions);
@@ -162,17 +178,18 @@ VG_METHOD(update) {
     vg_batch* self = user_data;
     verve_batch* batch;
     godot_array list;
-    uint32_t n, n_rewards, n_discrete, n_continuous;
+    uint32_t n, n_rewards, n_discrete, n_continuous, n_shown = 0;
     uint64_t need_discrete, need_continuous;
     float dt = 0.0f;
     int ok;
     VG_UNUSED;
-    if (!vg_begin_batch(&c, user_data, "update", argc, argv, 5, 5) || !vg_batch_handle(&c, user_data, &batch) ||
+    if (!vg_begin_batch(&c, user_data, "update", argc, argv, 5, 6) || !vg_batch_handle(&c, user_data, &batch) ||
         !vg_arg_type(&c, 0, "agents", GODOT_VARIANT_TYPE_ARRAY) ||
         !vg_arg_pool(&c, 1, "rewards", GODOT_VARIANT_TYPE_POOL_REAL_ARRAY, 0, &n_rewards) ||
         !vg_arg_pool(&c, 2, "discrete", GODOT_VARIANT_TYPE_POOL_INT_ARRAY, 1, &n_discrete) ||
         !vg_arg_pool(&c, 3, "continuous", GODOT_VARIANT_TYPE_POOL_REAL_ARRAY, 1, &n_continuous) ||
-        !vg_arg_float(&c, 4, "dt", &dt))
+        !vg_arg_float(&c, 4, "dt", &dt) ||
+        (argc > 5 && !vg_arg_pool(&c, 5, "demonstrated", GODOT_VARIANT_TYPE_POOL_INT_ARRAY, 0, &n_shown)))
         return vg_variant_nil();
     list = vg_core->godot_variant_as_array(argv[0]);
     n = (uint32_t)vg_core->godot_array_size(&list);
@@ -181,6 +198,8 @@ VG_METHOD(update) {
     if (!ok) return vg_variant_nil();
     /* libverve reads one reward per agent and accepts longer sensor arrays: the sizes are ours to check. */
     if (n_rewards != n) ok = vg_fail(&c, "%u agents need %u rewards (got %u)", n, n, n_rewards);
+    else if (argc > 5 && n_shown != n)
+        ok = vg_fail(&c, "%u agents need %u demonstrated actions, -1 for their own choice (got %u)", n, n, n_shown);
     else if (n_discrete != need_discrete)
         ok = vg_fail(&c, "discrete has %u values; the agents' discrete sensors take %lu, agent after agent",
                      n_discrete, (unsigned long)need_discrete);

@@ -234,6 +234,45 @@ func test_batch_equals_single_updates():
 	check(auto.create() and auto.get_worker_count() >= 1, "create() takes one worker per hardware thread")
 
 
+# A batch where some members are shown what to do: the actions and learning of update_demonstrated
+# for them and update for the rest, in array order.
+func test_batch_demonstrated():
+	var batch = VerveBatch.new()
+	check(batch.create(2), "a batch: " + batch.get_last_error())
+	var batched = new_crowd()
+	var single = new_crowd()
+	var differ = 0
+	for t in 60:
+		var shown = PoolIntArray()
+		for i in batched["agents"].size():
+			shown.append(t % 2 if i % 3 == 1 else -1)
+		var p = packed(batched, t)
+		var actions = batch.update(batched["agents"], p[0], p[1], p[2], DT, shown)
+		check(typeof(actions) == TYPE_INT_ARRAY, "a demonstrated batch returns actions: " + batch.get_last_error())
+		var agents = single["agents"]
+		var expected = []
+		for i in agents.size():
+			if shown[i] >= 0:
+				agents[i].update_demonstrated(reward(single, i, t), discrete_of(agents[i], i, t), continuous_of(agents[i], i, t), DT, shown[i])
+				expected.append(shown[i])
+			else:
+				expected.append(agents[i].update(reward(single, i, t), discrete_of(agents[i], i, t), continuous_of(agents[i], i, t), DT))
+		single["last"] = expected
+		batched["last"] = Array(actions)
+		if actions != PoolIntArray(expected):
+			differ += 1
+	check(differ == 0, "a demonstrated batch is update_demonstrated and update in order (%d of 60 steps differ)" % differ)
+	check_same(batched, single, "after 60 demonstrated steps")
+	var p = packed(batched, 0)
+	check_error(batch, batch.update(batched["agents"], p[0], p[1], p[2], DT, PoolIntArray([0])), null, "demonstrated actions",
+		"a demonstrated list of the wrong size")
+	var too_big = PoolIntArray()
+	for i in batched["agents"].size():
+		too_big.append(7)
+	check_error(batch, batch.update(batched["agents"], p[0], p[1], p[2], DT, too_big), null, "out of range",
+		"a demonstrated action out of range")
+
+
 # Every refused batch call: null, the error in get_last_error(), and no agent changed (the twin
 # crowd, stepped alike before and after, still agrees).
 func test_batch_errors():
@@ -314,7 +353,7 @@ func test_batch_errors():
 	check_error(batch, batch.update(agents[0], rewards, discrete, continuous, DT), null, "agents must be an Array",
 		"one agent instead of an Array")
 	check_error(batch, batch.update(agents, rewards, discrete, continuous, "fast"), null, "dt must be a number", "a String dt")
-	check_error(batch, batch.update(agents, rewards, discrete, continuous), null, "takes 5 arguments (got 4)", "4 arguments")
+	check_error(batch, batch.update(agents, rewards, discrete, continuous), null, "takes 5 to 6 arguments (got 4)", "4 arguments")
 	# An absurd crowd: refused at its first element, nothing allocated beyond the Array itself.
 	var huge = []
 	huge.resize(200000)
@@ -362,6 +401,7 @@ func _init():
 	test_brain_bodies()
 	test_brain_persistence()
 	test_batch_equals_single_updates()
+	test_batch_demonstrated()
 	test_batch_errors()
 	report("verve godot crowd")
 	quit()
