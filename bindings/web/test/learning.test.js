@@ -56,15 +56,17 @@ test('10-armed bandit: the best lever becomes the most probable', () => {
   agent.dispose();
 });
 
+// A brain of two continuous sensors and three actions with three bodies, and what body i senses at t.
+function brainOfThree() {
+  const brain = verve.createBrain({ continuous: 2, actions: 3, seed: 3 });
+  return { brain, bodies: [brain.createBody(), brain.createBody(), brain.createBody()] };
+}
+const obs = (i, t) => ({ continuous: [Math.sin(t * 0.1 + i), Math.cos(t * 0.07 - i)] });
+
 test('brains: bodies learn into one brain, and a batch does exactly what updates in order do', () => {
-  const make = () => {
-    const brain = verve.createBrain({ continuous: 2, actions: 3, seed: 3 });
-    return { brain, bodies: [brain.createBody(), brain.createBody(), brain.createBody()] };
-  };
-  const a = make();
-  const b = make();
+  const a = brainOfThree();
+  const b = brainOfThree();
   const batch = verve.createBatch();
-  const obs = (i, t) => ({ continuous: [Math.sin(t * 0.1 + i), Math.cos(t * 0.07 - i)] });
   for (let t = 0; t < 200; ++t) {
     const rewards = [0.1 * Math.sin(t), -0.2, 0.3];
     const one = a.bodies.map((body, i) => body.update(rewards[i], obs(i, t), 0.05));
@@ -84,14 +86,9 @@ test('brains: bodies learn into one brain, and a batch does exactly what updates
 });
 
 test('a batch with demonstrated actions does what updateDemonstrated and update in order do', () => {
-  const make = () => {
-    const brain = verve.createBrain({ continuous: 2, actions: 3, seed: 3 });
-    return { brain, bodies: [brain.createBody(), brain.createBody(), brain.createBody()] };
-  };
-  const a = make();
-  const b = make();
+  const a = brainOfThree();
+  const b = brainOfThree();
   const batch = verve.createBatch();
-  const obs = (i, t) => ({ continuous: [Math.sin(t * 0.1 + i), Math.cos(t * 0.07 - i)] });
   for (let t = 0; t < 60; ++t) {
     const rewards = [0.1, -0.2, 0.3];
     const shown = [null, t % 3, null];
