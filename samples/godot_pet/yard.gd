@@ -60,6 +60,7 @@ var fast = false
 var test_run = 0        # --verve-test: runs done, seed after seed, mode after mode
 var sums = {"alone": 0.0, "shown": 0.0, "praised": 0.0}
 var failed = false
+var unlearned = []     # the runs that did not learn within MAX_TRIALS
 var finished = false
 var hud = Label.new()   # quit asked: Godot quits at the end of the frame
 
@@ -236,8 +237,9 @@ func test_progress():
 	var text = str(learned_at) if learned_at > 0 else "more than %d" % MAX_TRIALS
 	print("pet seed %d, %s: learned the trick after %s trials, %d treats" % [seed_value, mode, text, treats])
 	if learned_at == 0:
-		failed = true
-	sums[mode] += learned_at / float(TEST_SEEDS)
+		failed = true  # counted as MAX_TRIALS + 1 below: the mean is then a lower bound
+		unlearned.append("seed %d %s" % [seed_value, mode])
+	sums[mode] += (learned_at if learned_at > 0 else MAX_TRIALS + 1) / float(TEST_SEEDS)
 	test_run += 1
 
 
@@ -247,6 +249,9 @@ func report():
 	var praised = sums["praised"]
 	print("mean of %d seeds: alone %.1f, shown for %d trials %.1f, praised %.1f" % [TEST_SEEDS, alone, TEST_SHOWN,
 		shown, praised])
+	if failed:
+		print("not learned within %d trials (counted as %d): %s" % [MAX_TRIALS, MAX_TRIALS + 1,
+			PoolStringArray(unlearned).join(", ")])
 	print("alone / shown %.2f (needs 3), alone / praised %.2f (needs 1.3)" % [alone / shown, alone / praised])
 	finished = true
 	var ok = not failed and alone >= 3.0 * shown and alone >= 1.3 * praised
