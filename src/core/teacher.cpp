@@ -55,7 +55,12 @@ void TeacherMemory::credit(WeightTable& w, float praise, float rate, float bound
         const Credit& c = scratch_[i];
         if (i > 0 && scratch_[i - 1].feature == c.feature && scratch_[i - 1].action == c.action) continue;
         float& weight = w.row(c.feature)[WeightLayout::kPolicy + c.action];
-        weight += rate * praise * c.activation;
+        const float step = rate * praise * c.activation;
+        // Praise moves a weight only within +-kPraiseReach (what the game's rewards taught beyond it
+        // stays): a pet scolded whatever it does ends with its scolded acts alike at the floor,
+        // choosing among them as at the start, not frozen into the one it was scolded least for.
+        if (step > 0.0f) weight = std::max(weight, std::min(weight + step, kPraiseReach));
+        else weight = std::min(weight, std::max(weight + step, -kPraiseReach));
         if (bound > 0.0f) weight = std::clamp(weight, -bound, bound);
     }
 }

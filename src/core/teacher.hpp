@@ -7,7 +7,8 @@
 // updates a second. Acts the teacher did not mean share the credit, but they are as often praised
 // as scolded and cancel out over many judgements, while the judged act's credit adds up (Knox and
 // Stone's TAMER assigns credit over a window in the same way). Praise is not a reward: the critic
-// never sees it, so the game's own rewards and values stay as they are.
+// never sees it, so the game's own rewards and values stay as they are. A judgement moves a weight
+// only within +-kPraiseReach, so acts scolded often end alike at the floor instead of frozen in order.
 //
 // Remembering costs a copy of the active features per update, so an agent starts remembering at its
 // first judgement (praise 0 arms it without judging) and keeps doing so; the memory is not saved.
@@ -26,6 +27,10 @@ public:
     static constexpr double kWindowSeconds = 2.5;
     // Acts kept at most (at 60 updates a second the window holds 150); older ones are forgotten.
     static constexpr std::size_t kMaxActs = 1024;
+    // The farthest a judgement moves an actor weight from 0 (credit(): a scolded habit floors there).
+    // Measured with the cue task and the pets (docs/teaching.md): 3 and 6 cost the cue task at 0.2 s
+    // (0.337, 0.739 right), 10 kept it (0.759) and ended the Godot pet's frozen policy.
+    static constexpr float kPraiseReach = 10.0f;
 
     bool armed() const { return armed_; }
     void arm() { armed_ = true; }
