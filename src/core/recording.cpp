@@ -15,20 +15,17 @@ namespace {
 
 [[noreturn]] void refuse(const std::string& message) { throw Error(ErrorCode::InvalidArgument, message); }
 
+// The sensors and actions as an agent's descriptor, checked as an agent's is (AgentDescriptor::validate).
 AgentDescriptor shapeOf(std::vector<std::uint32_t> discrete, std::uint32_t continuous, std::uint32_t actions) {
-    if (discrete.size() > DescriptorLimits::kMaxSensors || continuous > DescriptorLimits::kMaxSensors) {
-        refuse("a recording has at most " + std::to_string(DescriptorLimits::kMaxSensors) + " sensors of each kind");
-    }
-    for (std::uint32_t values : discrete) {
-        if (values == 0 || values > DescriptorLimits::kMaxDiscreteValues) refuse("a discrete sensor of a recording has no values or too many");
-    }
-    if (actions == 0 || actions > DescriptorLimits::kMaxActions) {
-        refuse("a recording's agents have 1 to " + std::to_string(DescriptorLimits::kMaxActions) + " actions, not " + std::to_string(actions));
+    // Bounded before anything is sized from it: a loaded file's count may be anything.
+    if (continuous > DescriptorLimits::kMaxSensors) {
+        refuse("a recording has at most " + std::to_string(DescriptorLimits::kMaxSensors) + " continuous sensors");
     }
     AgentDescriptor d;
     d.discreteSensors = std::move(discrete);
     d.continuousSensors.resize(continuous);
     d.numActions = actions;
+    d.validate();
     return d;
 }
 

@@ -18,12 +18,7 @@ namespace {
 
 // The save of an agent, made with allocation failures off and not counted.
 std::string bytesOf(const verve_agent* agent, CountingAllocator& allocator) {
-    const long failAt = allocator.failAt.exchange(-1);
-    const long count = allocator.allocations.load();
-    std::string xml = saveToString(agent);
-    allocator.allocations = count;
-    allocator.failAt = failAt;
-    return xml;
+    return uncounted(allocator, [&] { return saveToString(agent); });
 }
 
 class Scenario {

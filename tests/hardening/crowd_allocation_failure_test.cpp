@@ -19,17 +19,6 @@
 namespace verve::hardening {
 namespace {
 
-// Saves made with allocation failures off and not counted.
-template <typename Save>
-std::string uncounted(CountingAllocator& allocator, Save&& save) {
-    const long failAt = allocator.failAt.exchange(-1);
-    const long count = allocator.allocations.load();
-    std::string bytes = save();
-    allocator.allocations = count;
-    allocator.failAt = failAt;
-    return bytes;
-}
-
 std::string brainBytes(const verve_brain* brain) {
     size_t size = 0;
     EXPECT_EQ(verve_brain_save_memory_binary(brain, nullptr, &size), VERVE_OK) << lastError();

@@ -16,17 +16,6 @@
 namespace verve::hardening {
 namespace {
 
-// `run` with allocation failures off and not counted.
-template <typename Run>
-std::string quietly(CountingAllocator& allocator, Run&& run) {
-    const long failAt = allocator.failAt.exchange(-1);
-    const long count = allocator.allocations.load();
-    std::string bytes = run();
-    allocator.allocations = count;
-    allocator.failAt = failAt;
-    return bytes;
-}
-
 std::string recordingBytes(const verve_recording* r) {
     size_t size = 0;
     if (verve_recording_save_memory(r, nullptr, &size) != VERVE_OK) return "(no save)";
@@ -88,10 +77,10 @@ public:
     }
 
     std::string recording() const {
-        return recording_ == nullptr ? std::string() : quietly(allocator_, [&] { return recordingBytes(recording_); });
+        return recording_ == nullptr ? std::string() : uncounted(allocator_, [&] { return recordingBytes(recording_); });
     }
     std::string learner() const {
-        return learner_ == nullptr ? std::string() : quietly(allocator_, [&] { return saveToString(learner_); });
+        return learner_ == nullptr ? std::string() : uncounted(allocator_, [&] { return saveToString(learner_); });
     }
 
 private:
