@@ -1,7 +1,6 @@
 #include "core/demonstration.hpp"
 
 #include <algorithm>
-#include <cmath>
 
 #include "core/td_learner.hpp"
 
@@ -16,7 +15,7 @@ void imitate(WeightTable& w, const std::vector<ActiveFeature>& phi, std::uint32_
         for (const ActiveFeature& f : phi) x += w.row(f.index)[WeightLayout::kPolicy + b] * f.activation;
         // Saturated preferences (|x| beyond ~88) give a step of 0 or +-1: always finite.
         const float target = b == action ? 1.0f : 0.0f;
-        const float step = rate * (target - 1.0f / (1.0f + std::exp(-x)));
+        const float step = rate * (target - sigmoid(x));
         for (const ActiveFeature& f : phi) {
             float& weight = w.row(f.index)[WeightLayout::kPolicy + b];
             weight += step * f.activation;

@@ -6,11 +6,6 @@
 #include "core/prefetch.hpp"
 
 namespace verve::core {
-namespace {
-
-float sigmoid(float x) { return 1.0f / (1.0f + std::exp(-x)); }
-
-}  // namespace
 
 TdLearner::TdLearner(std::uint32_t numActions, float traceThreshold)
     : numActions_(numActions), stride_(1 + numActions), threshold_(traceThreshold), kernels_(&kernels()) {

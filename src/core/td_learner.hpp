@@ -80,6 +80,9 @@ inline float hopelessValue(ValueBounds b) {
     return b.low < 0.0f ? b.low * (1.0f - 1e-4f) : -std::numeric_limits<float>::infinity();
 }
 
+// An actor neuron's activation y = 1 / (1 + e^-x) for its preference x (finite for any finite x).
+inline float sigmoid(float x) { return 1.0f / (1.0f + std::exp(-x)); }
+
 // An action mask's test: `allowed` holds numActions flags, or is nullptr for every action allowed.
 inline bool actionAllowed(const std::uint8_t* allowed, std::uint32_t a) { return allowed == nullptr || allowed[a] != 0; }
 
