@@ -21,7 +21,12 @@ ctest --preset known-gaps -j"$(nproc)" || echo "known gaps: some bars are still 
 
 # The README's `ctest --preset release`: the release preset's tree is build/, labelled known gaps left out.
 echo "== C++, C ABI, Lua and LÖVE suites (ctest)"
-ctest --preset release -j"$(nproc)"
+# A failure's output is printed again last, where a log's tail shows it.
+if ! ctest --preset release -j"$(nproc)"; then
+  echo "== the failed tests again, alone"
+  ctest --preset release --rerun-failed || true
+  exit 1
+fi
 
 # The shipped Linux library is built in Debian 11 (./scripts/build_old_glibc.sh, on demand: a few
 # minutes) to load on glibc 2.31; this machine's build needs its own, newer glibc. Cheap checks here:

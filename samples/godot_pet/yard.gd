@@ -64,13 +64,14 @@ var test_run = 0        # --verve-test: runs done, seed after seed, mode after m
 var sums = {"alone": 0.0, "shown": 0.0, "praised": 0.0}
 var failed = false
 var unlearned = []     # the runs that did not learn within MAX_TRIALS
-var finished = false
-var hud = Label.new()   # quit asked: Godot quits at the end of the frame
+var finished = false    # quit asked: Godot quits at the end of the frame
+var hud = null          # the text beside the yard (not made in --verve-test)
 
 
 func _ready():
 	if testing:
 		return  # _process runs the test, a run a frame
+	hud = Label.new()
 	hud.rect_position = Vector2(SIZE * CELL + 40, 30)
 	add_child(hud)
 	start(1, 0, false, false)
