@@ -132,7 +132,8 @@ typedef struct verve_agent_desc {
     uint64_t max_rbfs; /* RBF budget (default 1000000; 0: unlimited, up to 2^32 - 2). At the budget the
                           agent keeps working with the RBFs it has and counts rbf_budget_hits */
     float policy_weight_bound;             /* > 0: actor weights stay within +-bound, so habits can be
-                                              unlearned when the world changes; 0: unbounded (default) */
+                                              unlearned when the world changes; 0 (default): only
+                                              VERVE_ADAPT_HABIT_BOUND's ceiling of +10, if set */
 
     /* V4. 64 bits wide so that it starts exactly where V3 ended (V3 had 4 bytes of tail padding). */
     uint64_t adaptation; /* VERVE_ADAPT_* bits: settings the agent sets for itself from what it
@@ -145,7 +146,9 @@ typedef struct verve_agent_desc {
 #define VERVE_ADAPT_ACTOR_SCALE 2u  /* the actor's steps stay reward-sized when TD errors grow */
 #define VERVE_ADAPT_DECISION_RATE 4u /* an update less than 0.1 s after the previous one learns as much
                                         as a 0.1 s decision (learning rates, trace decay) */
-#define VERVE_ADAPT_ALL 7u
+#define VERVE_ADAPT_HABIT_BOUND 8u  /* with policy_weight_bound 0, actor weights stay at or below +10,
+                                       so a habit a changed world makes wrong can be unlearned */
+#define VERVE_ADAPT_ALL 15u
 
 /* The sizes of verve_agent_desc a library accepts in struct_size: each release's full struct.
  * V1 ended after `seed` (no planning fields); V2 after discrete_prediction; V3 after

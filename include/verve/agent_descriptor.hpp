@@ -34,7 +34,10 @@ struct Adaptation {
     // learning rates and trace decay), so hosts calling 50-60 times a second learn as fast per
     // decision as the thesis's 10 decisions a second (core/decision_rate.hpp).
     static constexpr std::uint32_t DecisionRate = 1u << 2;
-    static constexpr std::uint32_t All = Horizon | ActorScale | DecisionRate;
+    // With no policyWeightBound, actor weights stay at or below +10 (a sigmoid of 0.99995): a habit
+    // a changed world makes wrong can be unlearned (core/habit_bound.hpp).
+    static constexpr std::uint32_t HabitBound = 1u << 3;
+    static constexpr std::uint32_t All = Horizon | ActorScale | DecisionRate | HabitBound;
 };
 
 // Bounds on every size an agent derives from its descriptor, so that no descriptor or save can ask

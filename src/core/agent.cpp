@@ -83,7 +83,9 @@ StepConstants Agent::Impl::constantsFor(float dt) const {
     k.rates.value = rateFromTimeConstant(seconds, desc.tauValue) / rep.activationSum();
     k.rates.policy = desc.policyMultiplier * k.rates.value;
     if ((desc.adaptation & Adaptation::ActorScale) != 0) k.rates.policy *= brain->tdScale.actorFactor();
-    k.rates.policyBound = desc.policyWeightBound;
+    // Adaptation::HabitBound: with no bound of the user's, habits stay at or below +10 (core/habit_bound.hpp).
+    k.rates.policyRange = core::PolicyRange::symmetric(desc.policyWeightBound);
+    if (desc.policyWeightBound == 0.0f && (desc.adaptation & Adaptation::HabitBound) != 0) k.rates.policyRange = core::HabitBound::range();
     // Curiosity adds to the rewards of imagined steps: novelty up to its factor, progress (which
     // may be negative) up to its factor in size (core/curiosity.hpp).
     const float bonus = desc.planning && desc.curiosity != CuriosityMode::None ? desc.curiosityFactor : 0.0f;
@@ -309,7 +311,7 @@ std::uint32_t Agent::Impl::step(float reward, ObservationView obs, float dt, Act
     if (demonstrated != nullptr) {
         // The demonstrator's action stands for the agent's own (core/demonstration.hpp).
         action = *demonstrated;
-        if (s.learning) core::imitate(s.weights, s.current, action, mask.allowed, k.rates.policy, k.rates.policyBound);
+        if (s.learning) core::imitate(s.weights, s.current, action, mask.allowed, k.rates.policy, k.rates.policyRange);
     }
     if (s.learning && s.learnsFromRealSteps()) s.td.mark(s.current, action, s.rep.featureCount());
     if (s.teacher.armed()) s.teacher.remember(dt, action, s.current);
@@ -366,7 +368,7 @@ void Agent::teach(float praise) {
     }
     if (s.learning && praise != 0.0f) {
         const StepConstants k = s.constantsFor(s.lastDt);
-        s.teacher.credit(s.weights, praise, k.rates.policy, k.rates.policyBound);
+        s.teacher.credit(s.weights, praise, k.rates.policy, k.rates.policyRange);
     }
     s.teacher.arm();  // after the credit: a refused or failed call changes nothing
 }

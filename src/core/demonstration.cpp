@@ -7,7 +7,7 @@
 namespace verve::core {
 
 void imitate(WeightTable& w, const std::vector<ActiveFeature>& phi, std::uint32_t action, const std::uint8_t* allowed,
-             float rate, float bound) {
+             float rate, const PolicyRange& range) {
     const std::uint32_t actions = w.layout().numActions;
     for (std::uint32_t b = 0; b < actions; ++b) {
         if (!actionAllowed(allowed, b)) continue;
@@ -19,7 +19,7 @@ void imitate(WeightTable& w, const std::vector<ActiveFeature>& phi, std::uint32_
         for (const ActiveFeature& f : phi) {
             float& weight = w.row(f.index)[WeightLayout::kPolicy + b];
             weight += step * f.activation;
-            if (bound > 0.0f) weight = std::clamp(weight, -bound, bound);
+            weight = range.clamp(weight);
         }
     }
 }

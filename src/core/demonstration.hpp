@@ -17,14 +17,15 @@
 #include <vector>
 
 #include "core/active_feature.hpp"
+#include "core/habit_bound.hpp"
 #include "core/weight_table.hpp"
 
 namespace verve::core {
 
 // One imitation step at the features `phi` towards `action`: each allowed action's preference
 // x_b moves by rate * (t_b - sigmoid(x_b)) * phi_i at feature i (t_b: 1 for `action`, else 0),
-// kept within +-bound when bound > 0. `allowed`: numActions flags, or nullptr for all.
+// kept within `range`. `allowed`: numActions flags, or nullptr for all.
 void imitate(WeightTable& w, const std::vector<ActiveFeature>& phi, std::uint32_t action, const std::uint8_t* allowed,
-             float rate, float bound);
+             float rate, const PolicyRange& range);
 
 }  // namespace verve::core

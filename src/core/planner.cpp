@@ -74,7 +74,7 @@ void Planner::weighEveryAction(const PlanSettings& s, const std::vector<ActiveFe
     // Each action as if tried with equal chance: together one real step's worth of actor learning.
     // The critic and the model do not learn here, so every action is judged on the same values.
     const std::uint32_t actions = td_.numActions();
-    const TdRates rates{0.0f, s.rates.policy / static_cast<float>(actions), s.rates.policyBound};
+    const TdRates rates{0.0f, s.rates.policy / static_cast<float>(actions), s.rates.policyRange};
     td_.clear();  // the plan's traces; each step below decays by 0, which leaves none live
     for (std::uint32_t a = 0; a < actions; ++a) {
         if (!actionAllowed(s.allowed, a)) continue;

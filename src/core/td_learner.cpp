@@ -16,6 +16,8 @@ void TdLearner::reserve(std::uint32_t features, std::size_t active) {
     reserveRoom(traces_, std::size_t(features) * stride_);
     // At most `active` more traces become live (and one spare slot, reserveLive()).
     reserveRoom(live_, std::min<std::size_t>(liveCount_ + active, features) + 1);
+    // A bounded update copies the live list (every agent's is, with Adaptation::HabitBound).
+    reserveRoom(trained_, live_.capacity());
 }
 
 float TdLearner::value(const WeightTable& w, const std::vector<ActiveFeature>& phi, PrefetchQueue* ahead) const {
@@ -89,7 +91,7 @@ void TdLearner::trainAndDecay(WeightTable& w, float delta, TdRates rates, float 
     step[0] = rates.value * delta;
     // Bounded actor weights: every row trained now is clamped after the kernel has moved it, so
     // remember the rows first (the kernel drops some from the live list as it goes).
-    const bool bounded = rates.policyBound > 0.0f;
+    const bool bounded = rates.policyRange.bounded();
     if (bounded) trained_.assign(live_.begin(), live_.begin() + liveCount_);
     TraceStep s;
     s.step = step;
@@ -102,7 +104,7 @@ void TdLearner::trainAndDecay(WeightTable& w, float delta, TdRates rates, float 
     if (bounded) {
         for (std::uint32_t feature : trained_) {
             float* policy = w.row(feature) + WeightLayout::kPolicy;
-            for (std::uint32_t a = 0; a < numActions_; ++a) policy[a] = std::clamp(policy[a], -rates.policyBound, rates.policyBound);
+            for (std::uint32_t a = 0; a < numActions_; ++a) policy[a] = rates.policyRange.clamp(policy[a]);
         }
     }
 }

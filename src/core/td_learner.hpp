@@ -13,6 +13,7 @@
 #include <limits>
 #include <vector>
 
+#include "core/habit_bound.hpp"
 #include "core/kernels.hpp"
 #include "core/rng.hpp"
 #include "core/state_representation.hpp"
@@ -23,7 +24,7 @@ namespace verve::core {
 struct TdRates {
     float value = 0.0f;   // eta_value
     float policy = 0.0f;  // eta_policy = k * eta_value
-    float policyBound = 0.0f;  // > 0: every actor weight stays within +-policyBound (0: unbounded)
+    PolicyRange policyRange;  // every actor weight stays within it (core/habit_bound.hpp)
 };
 
 // The real rewards an agent has learned from, widened to include 0 (a trial may end before any

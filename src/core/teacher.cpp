@@ -36,7 +36,7 @@ void TeacherMemory::compact() noexcept {
     pool_.erase(pool_.begin(), pool_.begin() + shift);
 }
 
-void TeacherMemory::credit(WeightTable& w, float praise, float rate, float bound) {
+void TeacherMemory::credit(WeightTable& w, float praise, float rate, const PolicyRange& range) {
     forgetBefore(clock_ - kWindowSeconds);
     scratch_.clear();
     scratch_.reserve(pool_.size());  // may throw: nothing has changed yet
@@ -61,7 +61,7 @@ void TeacherMemory::credit(WeightTable& w, float praise, float rate, float bound
         // choosing among them as at the start, not frozen into the one it was scolded least for.
         if (step > 0.0f) weight = std::max(weight, std::min(weight + step, kPraiseReach));
         else weight = std::min(weight, std::max(weight + step, -kPraiseReach));
-        if (bound > 0.0f) weight = std::clamp(weight, -bound, bound);
+        weight = range.clamp(weight);
     }
 }
 

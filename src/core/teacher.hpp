@@ -18,6 +18,7 @@
 #include <vector>
 
 #include "core/active_feature.hpp"
+#include "core/habit_bound.hpp"
 #include "core/weight_table.hpp"
 
 namespace verve::core {
@@ -38,9 +39,9 @@ public:
     void reserve(std::size_t features);
     // The act chosen `dt` seconds after the previous one: `action` at the features `phi`.
     void remember(float dt, std::uint32_t action, const std::vector<ActiveFeature>& phi) noexcept;
-    // Moves the remembered acts' preferences by rate * praise * activation (within +-bound when bound
-    // > 0). Allocates its scratch before changing any weight.
-    void credit(WeightTable& w, float praise, float rate, float bound);
+    // Moves the remembered acts' preferences by rate * praise * activation (kept within `range`).
+    // Allocates its scratch before changing any weight.
+    void credit(WeightTable& w, float praise, float rate, const PolicyRange& range);
     std::size_t acts() const { return acts_.size() - first_; }
 
 private:

@@ -7,6 +7,7 @@
 #include <functional>
 #include <limits>
 #include <numeric>
+#include <utility>
 #include <vector>
 
 #include "discrete_obs.hpp"
@@ -266,4 +267,40 @@ TEST(PolicyWeightBound, KeepsEveryActorWeightWithinTheBound) {
         d.policyWeightBound = bad;
         expectRefused([&] { Agent refused(d); });
     }
+}
+
+// Adaptation::HabitBound (core/habit_bound.hpp): with no policy_weight_bound, no actor weight rises
+// above +10, while a failing action falls as far as its failures take it.
+TEST(HabitBound, CapsHabitsAtTenAndLeavesFailuresUnbounded) {
+    const auto extremes = [](const AgentSnapshot& s, std::uint32_t actions) {
+        float high = -std::numeric_limits<float>::infinity(), low = std::numeric_limits<float>::infinity();
+        for (std::size_t f = 0; f < s.weights.size() / s.stride; ++f) {
+            for (std::uint32_t a = 0; a < actions; ++a) {
+                high = std::max(high, s.weights[f * s.stride + 1 + a]);
+                low = std::min(low, s.weights[f * s.stride + 1 + a]);
+            }
+        }
+        return std::make_pair(low, high);
+    };
+    AgentDescriptor d = discreteAgent(3);
+    d.policyMultiplier = 50.0f;
+    ASSERT_NE(d.adaptation & Adaptation::HabitBound, 0u);  // the default
+    Agent capped(d);
+    teach(capped, 1, 300);
+    const auto [low, high] = extremes(capped.snapshot(), 3);
+    EXPECT_FLOAT_EQ(high, 10.0f);  // reached, never passed
+    EXPECT_LT(low, -10.0f);
+
+    d.adaptation &= ~Adaptation::HabitBound;
+    Agent free(d);
+    teach(free, 1, 300);
+    EXPECT_GT(extremes(free.snapshot(), 3).second, 10.0f);
+
+    d.adaptation = Adaptation::All;
+    d.policyWeightBound = 4.0f;  // the user's bound replaces the ceiling, both ways
+    Agent bounded(d);
+    teach(bounded, 1, 300);
+    const auto [bLow, bHigh] = extremes(bounded.snapshot(), 3);
+    EXPECT_FLOAT_EQ(bHigh, 4.0f);
+    EXPECT_FLOAT_EQ(bLow, -4.0f);
 }

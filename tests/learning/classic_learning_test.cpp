@@ -46,45 +46,29 @@ TEST(ClassicControlLearning, AcrobotIsSolvedAtDefaultsInAThirdOfTheZooBudget) {
 }
 
 // Before the horizon followed the trials: no seed in 360k steps (the goal lay beyond the 1 s
-// horizon); before updates learned as 0.1 s decisions: 10 of 10, median 145,565, worst 227,691.
-TEST(ClassicControlLearning, MountainCarIsSolvedAtDefaultsOnNineSeedsInTen) {
-    const auto steps = stepsToSolve("mountain-car-v0", 3 * zooBudget("mountain-car-v0"));
-    // Measured: 9 of 10 within 360k (seed 3 settles at -130), median 77,459; the Zoo's DQN trains
-    // for 120,000.
-    EXPECT_GE(std::count_if(steps.begin(), steps.end(), [](std::uint64_t s) { return s <= 3 * zooBudget("mountain-car-v0"); }), 9);
-    EXPECT_LE(median(steps), 100000u);
+// horizon); before updates learned as 0.1 s decisions: 10 of 10, median 145,565, worst 227,691;
+// before habits were bounded (core/habit_bound.hpp): 9 of 10 within 360k (seed 3 settled at -130
+// for at least 1M steps, its habit too firm for the small TD errors left), median 77,459.
+TEST(ClassicControlLearning, MountainCarIsSolvedAtDefaultsOnEverySeedWithinTheZooBudget) {
+    const auto steps = stepsToSolve("mountain-car-v0", zooBudget("mountain-car-v0"));
+    // Measured: worst 113,895, median 61,626; the Zoo's DQN trains for 120,000.
+    EXPECT_LE(*std::max_element(steps.begin(), steps.end()), zooBudget("mountain-car-v0"));
+    EXPECT_LE(median(steps), 80000u);
 }
 
 // Before updates learned as 0.1 s decisions (core/decision_rate.hpp): no seed in 300k steps (the
-// last 100 episodes averaged 343-385).
-TEST(ClassicControlLearning, CartPoleIsSolvedAtDefaultsOnEverySeed) {
-    const auto steps = stepsToSolve("cart-pole-v1", 3 * zooBudget("cart-pole-v1"));
-    // Measured: worst 129,219, median 103,448; the Zoo's PPO trains for 100,000.
-    EXPECT_LE(*std::max_element(steps.begin(), steps.end()), 200000u);
-    EXPECT_LE(median(steps), 125000u);
-}
-
-// Known gaps (not gating; docs/experiments.md): the goal, every seed within the Zoo's budget.
-TEST(KnownGapClassicControlLearning, MountainCarWithinTheZooBudgetOnEverySeed) {
-    const auto steps = stepsToSolve("mountain-car-v0", zooBudget("mountain-car-v0"));
-    EXPECT_LE(*std::max_element(steps.begin(), steps.end()), zooBudget("mountain-car-v0"));  // 2 of 10 over
-}
-
-// Every seed within 3x the Zoo's budget, as before the 0.1 s decisions (seed 3 now settles at -130
-// for at least 1M steps: its actor's habit is too firm for the small TD errors left).
-TEST(KnownGapClassicControlLearning, MountainCarOnEverySeed) {
-    const auto steps = stepsToSolve("mountain-car-v0", 3 * zooBudget("mountain-car-v0"));
-    EXPECT_LE(*std::max_element(steps.begin(), steps.end()), 300000u);
-}
-
-// Measured: median 103,448, 2 of 10 within 100k.
-TEST(KnownGapClassicControlLearning, CartPoleWithinTheZooBudgetOnEverySeed) {
+// last 100 episodes averaged 343-385); before habits were bounded: worst 129,219, median 103,448.
+TEST(ClassicControlLearning, CartPoleIsSolvedAtDefaultsOnEverySeedWithinTheZooBudget) {
     const auto steps = stepsToSolve("cart-pole-v1", zooBudget("cart-pole-v1"));
+    // Measured: worst 97,369, median 76,170; the Zoo's PPO trains for 100,000.
     EXPECT_LE(*std::max_element(steps.begin(), steps.end()), zooBudget("cart-pole-v1"));
+    EXPECT_LE(median(steps), 90000u);
 }
 
-// At defaults 2 of 10 seeds reach -200 within 300k steps (none before the 0.1 s decisions); resolution
-// 16 with tau_value 0.01 solves 9 of 10 (median 55k).
+// Known gap (not gating; docs/experiments.md): the goal, every seed within the Zoo's budget.
+
+// At defaults no seed reaches -200 within 300k steps (2 of 10 before habits were bounded, none before
+// the 0.1 s decisions); resolution 16 with tau_value 0.01 solves 9 of 10 (median 55k).
 TEST(KnownGapClassicControlLearning, PendulumWithinTheZooBudgetOnEverySeed) {
     const auto steps = stepsToSolve("pendulum-v1", zooBudget("pendulum-v1"));
     EXPECT_LE(*std::max_element(steps.begin(), steps.end()), zooBudget("pendulum-v1"));

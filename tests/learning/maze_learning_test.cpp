@@ -18,8 +18,8 @@ TEST(MazeLearning, Maze2WithoutPlanningBeatsTheOriginal) {
 
 // Known gap (not gating; docs/experiments.md, "Learning at defaults"): at the library's defaults
 // the continuous maze #2 is slower with the horizon its trials set than with the fixed 1 s one
-// (trials 46-50 over the defaults table's 40 runs: 242.2 steps with adaptation 0, 515.5 with it):
-// about one run in ten stalls for thousands of steps with its values at the long horizon's floor.
+// (trials 46-50 over the defaults table's 40 runs: 242.2 steps with adaptation 0, 515.5 with the
+// horizon, 447.7 with the habit bound too): a few runs in 40 stall at the 10,000-step cap.
 TEST(KnownGapMazeLearning, ContinuousMaze2AtDefaultsNoSlowerThanWithAFixedHorizon) {
     const LearningCurve c = runExperiment(findTask("maze2-continuous")->make, 40, 51, 1,
                                           [](verve::AgentDescriptor& d) { d = atLibraryDefaults(d); });

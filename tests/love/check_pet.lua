@@ -2,7 +2,7 @@
 -- bars measured on it (docs/teaching.md): over seeds 1-10, the trials until the pet does its trick
 -- five times in a row, alone, with the teacher at the controls for the first 30 trials, and with the
 -- teacher only clicking "good" or "bad" half a second after each sit. Measured (LÖVE 11.4): alone
--- 221.4, shown 51.9 (4.3x fewer), praised 89.6 (2.5x fewer).
+-- 218.6, shown 51.9 (4.2x fewer), praised 89.6 (2.4x fewer).
 -- Usage: luajit check_pet.lua <love> <verve-pet.love> <scratch dir>
 local love, game, scratch = arg[1], arg[2], arg[3]
 local SEEDS = 10

@@ -23,8 +23,11 @@ namespace Verve
         ActorScale = 2,
         /// <summary>An update less than 0.1 s after the previous one learns as much as a 0.1 s decision.</summary>
         DecisionRate = 4,
+        /// <summary>With <c>PolicyWeightBound</c> 0, actor weights stay at or below +10, so a habit a
+        /// changed world makes wrong can be unlearned.</summary>
+        HabitBound = 8,
         /// <summary>All of them (the default).</summary>
-        All = Horizon | ActorScale | DecisionRate,
+        All = Horizon | ActorScale | DecisionRate | HabitBound,
     }
 
     /// <summary>Intrinsic reward added during planning (<c>verve_curiosity</c>).</summary>

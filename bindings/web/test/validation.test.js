@@ -85,7 +85,7 @@ test('descriptors: unknown fields, wrong types and values the library refuses', 
     [{ planning: 1 }, /boolean/],
     [{ discrete: [0] }, /discrete/],
     [{ adaptation: -1 }, /adaptation/],
-    [{ adaptation: 8 }, /adaptation/],
+    [{ adaptation: 16 }, /adaptation/],
     [null, /object/],
     [[], /object/],
   ];
