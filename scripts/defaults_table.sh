@@ -1,18 +1,20 @@
 #!/usr/bin/env bash
 # The whole suite at the library's defaults, beside each task's best documented setting, in a few
 # minutes (docs/experiments.md, "Learning at defaults"): the thesis's tasks, the changing worlds and
-# the corridor (verve-experiments --defaults: only the task's sensors, actions and features), and
-# Gymnasium's classic control (verve-classic). A rule becomes a default only when this table says
-# it helps overall: run it before and after, and put both in the commit message.
-#   ./scripts/defaults_table.sh            # about 3 minutes on 2 cores
+# the corridor (verve-experiments --defaults: only the task's sensors, actions and features),
+# Gymnasium's classic control (verve-classic) and the Bullet scenes (verve-demo run --defaults).
+# A rule becomes a default only when this table says it helps overall: run it before and after,
+# and put both in the commit message.
+#   ./scripts/defaults_table.sh            # about 4 minutes on 2 cores
 #   SEEDS=4 ./scripts/defaults_table.sh    # classic control on fewer seeds: quicker, noisier
 #   DEFAULTS_ONLY=1 CANDIDATE="policy_weight_bound=10" ./scripts/defaults_table.sh
 #                                          # a candidate default in the defaults column, nothing else
 set -euo pipefail
 cd "$(dirname "$0")/.."
-./scripts/build.sh verve-experiments verve-classic >/dev/null
+./scripts/build.sh verve-experiments verve-classic verve-demo >/dev/null
 experiments=build/samples/tasks/verve-experiments
 classic=build/samples/tasks/verve-classic
+demo=build/samples/runner/verve-demo
 seeds=${SEEDS:-10}
 # CANDIDATE="key=value ..." adds settings to the defaults column: a candidate default, measured
 # before it is made one.
@@ -79,3 +81,38 @@ acrobot-v1       tau_discount=10 tau_value=0.01
 mountain-car-v0  tau_discount=10 tau_value=0.01
 pendulum-v1      resolution=16 tau_value=0.01
 TASKS
+
+# The Bullet scenes (verve-demo run SCENE --defaults), beside the scene's own settings (the thesis's
+# for the pendulum and the cart-pole, the arena's tuned horizon and traces).
+echo
+printf '%-16s %-44s %12s %12s   %s\n' scene metric defaults "scene's own" anchor
+scene_out=$(mktemp -d)
+trap 'rm -rf "$scene_out"' EXIT
+scene() {  # scene metric-kind [verve-demo flags...]
+  local name=$1 kind=$2
+  shift 2
+  case $kind in
+    last10)  # the mean reward per step of the last 10 trials, over 10 runs
+      "$demo" run "$name" --runs 10 --out "$scene_out" --no-save "$@" | awk '/^Learned/ { print $NF }' ;;
+    solved)  # the cart-pole's trials until one lasts the full 1800 s, over 4 runs (unsolved: the trial count + 1)
+      "$demo" run "$name" --runs 4 --out "$scene_out" --no-save "$@" | awk '
+        /reached the full trial/ { s += $NF; n++; r++ } /not solved in/ { s += $6 + 1; n++ }
+        END { printf "%d/%d, %.0f", r, n, s / n }' ;;
+    food)  # food per NPC-minute over minutes 16-20, seeds 1-3, 8 NPCs
+      for seed in 1 2 3; do
+        "$demo" run "$name" --trials 20 --seed "$seed" --out "$scene_out" --no-save "$@" >/dev/null
+        awk -F, 'NR > 1 && $1 > 15 { s += $2; n++ } END { print s / n }' "$scene_out/$name-curve.csv"
+      done | awk '{ s += $1 } END { printf "%.2f", s / NR }' ;;
+  esac
+}
+while read -r name kind metric anchor; do
+  [ -z "$name" ] && continue
+  d=$(scene "$name" "$kind" --defaults "${candidate[@]}")
+  t=skipped
+  [ -n "${DEFAULTS_ONLY:-}" ] || t=$(scene "$name" "$kind")
+  printf '%-16s %-44s %12s %12s   %s\n' "$name" "${metric//_/ }" "$d" "$t" "${anchor//_/ }"
+done <<'SCENES'
+pendulum   last10  reward_per_step,_last_10_trials              swings_up_and_holds:_~0.8
+cart-pole  solved  runs_reaching_1800_s,_mean_trial             thesis:_a_few_hundred_trials
+npc-arena  food    food_per_NPC-minute,_minutes_16-20           more_than_early
+SCENES

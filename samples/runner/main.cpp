@@ -13,6 +13,7 @@
 #include "learning_run.hpp"
 #include "plots.hpp"
 #include "scene_registry.hpp"
+#include "tasks/settings.hpp"
 #include "verve/error.hpp"
 #ifdef VERVE_DEMO_HAVE_IO
 #include "verve/io.hpp"
@@ -25,6 +26,8 @@ using namespace verve::demo;
 namespace {
 
 struct AgentFlags {
+    bool libraryDefaults = false;       // the scene's sensors and actions, every learning setting at its default
+    std::vector<std::string> settings;  // key=value by C ABI name, after libraryDefaults
     std::optional<std::uint32_t> resolution;
     std::optional<float> tauValue, tauDiscount, tauEligibility, policyMultiplier;
     bool planning = false;
@@ -32,6 +35,8 @@ struct AgentFlags {
 
     tasks::DescriptorOverride overrides() const {
         return [f = *this](AgentDescriptor& d) {
+            if (f.libraryDefaults) d = tasks::atLibraryDefaults(d);
+            for (const std::string& s : f.settings) tasks::applySetting(d, s);
             if (f.resolution) d.resolution = *f.resolution;
             if (f.tauValue) d.tauValue = *f.tauValue;
             if (f.tauDiscount) d.tauDiscount = *f.tauDiscount;
@@ -213,6 +218,9 @@ int main(int argc, char** argv) {
     compare->add_option("--minutes", comparison.minutes, "simulated minutes per run")->check(CLI::Range(1u, 1000u));
     compare->add_option("--npcs", comparison.npcs, "NPCs in the arena")->check(CLI::Range(1u, 64u));
     compare->add_option("--out", comparison.out, "output directory");
+    run->add_flag("--defaults", agent.libraryDefaults,
+                  "every learning setting at the library's default: only the scene's sensors, actions and features");
+    run->add_option("--set", agent.settings, "a setting by its C ABI name, e.g. tau_discount=2 (after --defaults)");
     run->add_option("--resolution", agent.resolution, "RBFs across each continuous sensor")->check(CLI::Range(1u, 1024u));
     run->add_option("--tau-value", agent.tauValue, "critic learning time constant (s)");
     run->add_option("--tau-discount", agent.tauDiscount, "discount time constant (s)");
