@@ -94,10 +94,13 @@ rm -rf "$work/godot-tests/addons/verve"
 cp -a "$dist/godot/addons/verve" "$work/godot-tests/addons/"
 cp "$dist/godot/addons/verve/bin/x11/libverve_godot.so" "$work/godot-tests/addons/verve/bin/x11/libverve_godot_other.so"
 # test_node.gd: the VerveAgentNode node and its overlay, and the doc's NPC learning. -e --quit: the
-# editor loads the addon's plugin (the test project enables it); any ERROR there fails.
+# editor loads the addon's plugin (the test project enables it); any ERROR there fails. Godot keeps
+# its settings under HOME: a private one, so an unset or read-only home fails nothing (as in CTest).
 godot_run() {  # <project> <pattern that fails the run> <godot3-server arguments...>
-  local project=$1 fail=$2; shift 2
-  if ! LANG=en timeout 300 godot3-server --path "$project" "$@" > "$work/godot.log" 2>&1 \
+  local project=$1 fail=$2 home=$work/godot-home; shift 2
+  mkdir -p "$home"
+  if ! LANG=en HOME=$home XDG_CONFIG_HOME=$home/.config XDG_DATA_HOME=$home/.local/share XDG_CACHE_HOME=$home/.cache \
+      timeout 300 godot3-server --path "$project" "$@" > "$work/godot.log" 2>&1 \
       || grep -qE "$fail" "$work/godot.log"; then
     cat "$work/godot.log" >&2; echo "package.sh: the Godot addon failed in godot3-server ($*)" >&2; exit 1
   fi
