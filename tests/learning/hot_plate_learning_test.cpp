@@ -8,7 +8,6 @@
 #include <gtest/gtest.h>
 
 #include "learning_window.hpp"
-#include "tasks/settings.hpp"
 
 using namespace verve::tasks;
 using namespace verve::tasks::testing;
@@ -102,9 +101,7 @@ TEST(SignaledHotPlateLearning, TwoDimensionalContinuousMatchesTheOriginal) {
 // ratios are those of exponentials: near a wrong wall one action is then chosen almost surely and
 // a trial stalls until the cap. A floor (-20) brings it to 10.27 but MountainCar-v0 to 1 of 10.
 TEST(KnownGapSignaledHotPlateLearning, OneDimensionalContinuousAtDefaultsNoSlowerThanWithUnboundedHabits) {
-    const LearningCurve c = runExperiment(findTask("signaled-hot-plate-1d-continuous")->make, 100, 81, 1,
-                                          [](verve::AgentDescriptor& d) { d = atLibraryDefaults(d); });
-    const Window w = windowOf(c, 73, 81);
+    const Window w = lateAtDefaults("signaled-hot-plate-1d-continuous", 100, 81, 73);
     print("signaled-hot-plate-1d-continuous at defaults, trials 73-80, 100 runs", w);
     EXPECT_LE(w.steps, 12.11);
 }

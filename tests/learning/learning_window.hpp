@@ -6,6 +6,7 @@
 
 #include "tasks/driver.hpp"
 #include "tasks/registry.hpp"
+#include "tasks/settings.hpp"
 
 namespace verve::tasks::testing {
 
@@ -34,6 +35,15 @@ inline LearningCurve learn(const std::string& task, std::uint32_t runs, std::uin
     const TaskInfo* info = findTask(task);
     if (info == nullptr) throw std::invalid_argument("no task " + task);
     return runExperiment(info->make, runs, trials, kSeed);
+}
+
+// The task with only its sensors, actions and features, every learning setting at the library's
+// default (as ./scripts/defaults_table.sh runs it: base seed 1, so the numbers are the table's).
+inline Window lateAtDefaults(const std::string& task, std::uint32_t runs, std::uint32_t trials, std::size_t first) {
+    const TaskInfo* info = findTask(task);
+    if (info == nullptr) throw std::invalid_argument("no task " + task);
+    const LearningCurve c = runExperiment(info->make, runs, trials, 1, [](AgentDescriptor& d) { d = atLibraryDefaults(d); });
+    return windowOf(c, first, trials);
 }
 
 inline void print(const std::string& label, const Window& w) {

@@ -3,7 +3,6 @@
 #include <gtest/gtest.h>
 
 #include "learning_window.hpp"
-#include "tasks/settings.hpp"
 
 using namespace verve::tasks;
 using namespace verve::tasks::testing;
@@ -21,9 +20,7 @@ TEST(MazeLearning, Maze2WithoutPlanningBeatsTheOriginal) {
 // (trials 46-50 over the defaults table's 40 runs: 242.2 steps with adaptation 0, 515.5 with the
 // horizon, 447.7 with the habit bound too): a few runs in 40 stall at the 10,000-step cap.
 TEST(KnownGapMazeLearning, ContinuousMaze2AtDefaultsNoSlowerThanWithAFixedHorizon) {
-    const LearningCurve c = runExperiment(findTask("maze2-continuous")->make, 40, 51, 1,
-                                          [](verve::AgentDescriptor& d) { d = atLibraryDefaults(d); });
-    const Window w = windowOf(c, 46, 51);
+    const Window w = lateAtDefaults("maze2-continuous", 40, 51, 46);
     print("maze2-continuous at defaults, trials 46-50, 40 runs", w);
     EXPECT_LE(w.steps, 242.2);
 }
