@@ -18,7 +18,7 @@ packages=(
 test_packages=(
   dpkg-dev                                     # apt-get source: third-party sources (scripts/fetch_source.sh)
   godot3-server                                # the Godot plugin's engine tests, headless (bindings/godot)
-  godot3 xvfb xauth                            # the editor loading the plugin in a window, on a virtual display
+  godot3 xvfb xauth libgl1-mesa-dri            # the editor loading the plugin in a window, on a virtual display (Mesa)
   g++-mingw-w64-x86-64-posix wine64            # verve.dll cross-built for Windows x64, tested under Wine
   love                                         # LÖVE 11: the samples/love game's test (tests/love)
   mono-devel                                   # C# binding under Mono 6.8, Unity's runtime: mcs, mono, netstandard facade
