@@ -6,8 +6,9 @@
 #   c-sdk/windows-x86_64   the mingw-release preset; its suites, and a consumer of this folder, under Wine
 #   lua/, love/            the LuaJIT/5.4 modules (Linux) and the LuaJIT module (Windows, suite under
 #                          Wine with luajit.exe); the LÖVE game's folders, the Linux one played by LÖVE
-#   godot/addons/verve     the GDNative addon (Linux) with its editor plugin and VerveAgentNode node,
-#                          run by godot3-server from this folder
+#   godot/addons/verve     the GDNative addon (Linux and Windows) with its editor plugin and
+#                          VerveAgentNode node, run by godot3-server from this folder (the Windows
+#                          plugin: loaded under Wine as Godot loads it; no Godot for Windows here)
 #   godot/sample           the sample game with that addon inside: opens and learns as it is
 #   csharp/                the NuGet and Unity packages, checked by bindings/csharp/test.sh
 # plus README.md (what is where) and SHA256SUMS. About 7 minutes on 2 cores from a fresh clone (2 of
@@ -87,6 +88,11 @@ step "Godot addon (Linux): libverve_godot.so built here, with the Debian 11 libv
 mkdir -p "$dist/godot/addons"
 cp -a build/godot/addons/verve "$dist/godot/addons/"
 cp -L "$linux/lib/libverve.so.0" "$dist/godot/addons/verve/bin/x11/libverve.so.0"
+# Windows: the mingw-release build's plugin and verve.dll (the .gdnlib names both platforms). No
+# Godot for Windows here: the bundle's copy is loaded as Godot loads it, under Wine.
+cp -a build/mingw/godot/addons/verve/bin/win64 "$dist/godot/addons/verve/bin/"
+"$wine" build/mingw/bindings/godot/load_check/verve_godot_windows_load.exe \
+  "$dist/godot/addons/verve/bin/win64/libverve_godot.dll" | tr -d '\r'
 # The binding's checks in the engine, headless, with the bundle's addon in the test project.
 rm -rf "$work/godot-tests"
 cp -a build/godot/tests "$work/godot-tests"

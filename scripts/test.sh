@@ -53,7 +53,7 @@ echo "== the commands README.md and docs/ give (scripts/check_docs.sh, about 1 m
 echo "== fuzz targets, 30 s each (docs/fuzzing.md; ./scripts/fuzz_campaign.sh for a real campaign)"
 ./scripts/fuzz.sh 30
 
-echo "== Windows x64: verve.dll and the LuaJIT module cross-built with MinGW-w64, the C ABI and Lua suites under Wine"
+echo "== Windows x64: verve.dll, the LuaJIT module and the Godot plugin cross-built with MinGW-w64, the C ABI and Lua suites and the plugin's load check under Wine"
 # About 3-4 min on 2 cores from scratch: LuaJIT's cross build ~50 s (once), the first Wine run
 # creates build/mingw/wine-prefix (~25 s), the Lua suite under luajit.exe ~15 s.
 windows_start=$SECONDS
