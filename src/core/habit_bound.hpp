@@ -22,7 +22,11 @@ struct PolicyRange {
     static PolicyRange symmetric(float bound) {
         return bound > 0.0f ? PolicyRange{-bound, bound} : PolicyRange{};
     }
-    bool bounded() const { return low > -std::numeric_limits<float>::infinity() || high < std::numeric_limits<float>::infinity(); }
+    // Whether a step moving weights the way `direction` points (its sign) can leave the range.
+    bool crossable(float direction) const {
+        return direction > 0.0f ? high < std::numeric_limits<float>::infinity()
+                                : direction < 0.0f && low > -std::numeric_limits<float>::infinity();
+    }
     float clamp(float w) const { return std::clamp(w, low, high); }
 };
 

@@ -90,8 +90,11 @@ void TdLearner::trainAndDecay(WeightTable& w, float delta, TdRates rates, float 
     std::fill_n(step, stride_, rates.policy * delta);
     step[0] = rates.value * delta;
     // Bounded actor weights: every row trained now is clamped after the kernel has moved it, so
-    // remember the rows first (the kernel drops some from the live list as it goes).
-    const bool bounded = rates.policyRange.bounded();
+    // remember the rows first (the kernel drops some from the live list as it goes). Traces are never
+    // negative (mark() keeps the larger of activation and trace), so every actor weight moves the
+    // way rates.policy * delta points: only when that side is bounded is there anything to clamp
+    // (with the habit ceiling alone, only after a positive TD error).
+    const bool bounded = rates.policyRange.crossable(rates.policy * delta);
     if (bounded) trained_.assign(live_.begin(), live_.begin() + liveCount_);
     TraceStep s;
     s.step = step;
