@@ -7,10 +7,11 @@
 namespace verve::demo {
 
 ArenaOutcome runArena(std::uint32_t minutes, std::uint64_t seed, std::uint32_t npcs,
-                      const tasks::DescriptorOverride& overrides, bool sharedBrain) {
+                      const tasks::DescriptorOverride& overrides, bool sharedBrain, bool batch) {
     scenes::NpcArenaConfig config;
     config.npcs = npcs;
     config.sharedBrain = sharedBrain;
+    config.batch = batch;
     AgentDescriptor desc = scenes::NpcArena::defaultDescriptor();
     if (overrides) overrides(desc);
     ArenaOutcome outcome;

@@ -18,6 +18,6 @@ struct ArenaOutcome {
 
 // sharedBrain: the NPCs are bodies of one brain instead of separate agents.
 ArenaOutcome runArena(std::uint32_t minutes, std::uint64_t seed, std::uint32_t npcs,
-                      const tasks::DescriptorOverride& overrides, bool sharedBrain = false);
+                      const tasks::DescriptorOverride& overrides, bool sharedBrain = false, bool batch = false);
 
 }  // namespace verve::demo

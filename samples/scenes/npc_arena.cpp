@@ -72,6 +72,10 @@ NpcArena::NpcArena(const NpcArenaConfig& config, std::uint64_t seed, const Agent
     rewards_.assign(config.npcs, 0.0f);
     actions_.assign(config.npcs, Forward);
     scratch_ = Observation(agents);
+    if (config.batch) {
+        batch_ = std::make_unique<Batch>();
+        for (Agent& a : agents_) batchAgents_.push_back(&a);
+    }
 }
 
 NpcArena::~NpcArena() = default;
@@ -145,15 +149,40 @@ std::uint32_t NpcArena::scriptedAction(const Observation& obs) {
     return Forward;
 }
 
-void NpcArena::step() {
+void NpcArena::stepBatch() {
+    packedDiscrete_.clear();
+    packedContinuous_.clear();
     for (std::size_t i = 0; i < agents_.size(); ++i) {
         observe(i, scratch_);
-        if (driver_ == Driver::Agents) {
-            actions_[i] = agents_[i].update(rewards_[i], scratch_, config_.agentStep);
-        } else {
-            actions_[i] = scriptedAction(scratch_);
-            if (driver_ == Driver::ScriptDemonstrates) {
-                agents_[i].updateDemonstrated(rewards_[i], scratch_.view(), config_.agentStep, actions_[i]);
+        packedDiscrete_.insert(packedDiscrete_.end(), scratch_.discrete.begin(), scratch_.discrete.end());
+        packedContinuous_.insert(packedContinuous_.end(), scratch_.continuous.begin(), scratch_.continuous.end());
+    }
+    BatchStep s;
+    s.agents = batchAgents_.data();
+    s.count = batchAgents_.size();
+    s.rewards = rewards_.data();
+    s.discrete = packedDiscrete_.data();
+    s.discreteTotal = packedDiscrete_.size();
+    s.continuous = packedContinuous_.data();
+    s.continuousTotal = packedContinuous_.size();
+    s.dt = config_.agentStep;
+    s.actions = actions_.data();
+    batch_->update(s);
+}
+
+void NpcArena::step() {
+    if (batch_ && driver_ == Driver::Agents) {
+        stepBatch();
+    } else {
+        for (std::size_t i = 0; i < agents_.size(); ++i) {
+            observe(i, scratch_);
+            if (driver_ == Driver::Agents) {
+                actions_[i] = agents_[i].update(rewards_[i], scratch_, config_.agentStep);
+            } else {
+                actions_[i] = scriptedAction(scratch_);
+                if (driver_ == Driver::ScriptDemonstrates) {
+                    agents_[i].updateDemonstrated(rewards_[i], scratch_.view(), config_.agentStep, actions_[i]);
+                }
             }
         }
     }

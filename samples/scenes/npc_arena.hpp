@@ -9,6 +9,7 @@
 
 #include "scene_random.hpp"
 #include "verve/agent.hpp"
+#include "verve/batch.hpp"
 
 class btRigidBody;
 
@@ -28,6 +29,9 @@ struct NpcArenaConfig {
     float physicsStep = 0.01f;       // s
     float agentStep = 0.1f;          // s
     bool sharedBrain = false;        // every NPC a body of one brain (verve/brain.hpp), not its own agent
+    // The agents step in one verve::Batch call per agent step, as a game with a crowd would: a
+    // shared brain's bodies then act in the batch's phases (docs/crowds.md).
+    bool batch = false;
 };
 
 // Totals over a stretch of simulated time, summed over all NPCs.
@@ -94,6 +98,12 @@ private:
     std::vector<Vec2> food_;
     std::vector<std::uint32_t> actions_;
     Observation scratch_;
+    // With config.batch: the batch, and its packed sensor values.
+    std::unique_ptr<Batch> batch_;
+    std::vector<Agent*> batchAgents_;
+    std::vector<std::int32_t> packedDiscrete_;
+    std::vector<float> packedContinuous_;
+    void stepBatch();
     double time_ = 0.0;
     ArenaStats totals_;
     Driver driver_ = Driver::Agents;

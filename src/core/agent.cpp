@@ -74,7 +74,9 @@ void Agent::Impl::learnReal(float delta, const StepConstants& k, float decay) {
     stats.tdError = delta;
 }
 
-StepConstants Agent::Impl::constantsFor(float dt) const {
+StepConstants Agent::Impl::constantsFor(float dt) const { return constantsFor(dt, brain->rewards); }
+
+StepConstants Agent::Impl::constantsFor(float dt, const core::RewardRange& rewards) const {
     StepConstants k;
     // Adaptation::DecisionRate: an update learns at least as much as a 0.1 s decision (core/decision_rate.hpp).
     const float seconds = (desc.adaptation & Adaptation::DecisionRate) != 0 ? core::DecisionRate::learningSeconds(dt) : dt;
@@ -90,7 +92,7 @@ StepConstants Agent::Impl::constantsFor(float dt) const {
     // may be negative) up to its factor in size (core/curiosity.hpp).
     const float bonus = desc.planning && desc.curiosity != CuriosityMode::None ? desc.curiosityFactor : 0.0f;
     const float bonusLow = desc.curiosity == CuriosityMode::Progress ? -bonus : 0.0f;
-    k.values = core::valueBounds(brain->rewards, bonusLow, bonus, k.gamma);
+    k.values = core::valueBounds(rewards, bonusLow, bonus, k.gamma);
     return k;
 }
 
@@ -196,6 +198,10 @@ void Agent::Impl::reserveFor(std::uint32_t features, std::size_t active) {
     // `previous` only ever swaps buffers with it: scratch follows the neighbourhood, not the RBFs.
     rep.reserve(features);
     weights.reserve(features);
+    reserveBody(features, active);
+}
+
+void Agent::Impl::reserveBody(std::uint32_t features, std::size_t active) {
     core::reserveRoom(current, active);
     core::reserveRoom(probabilities, td.traceStride());  // a restore may have left it numActions
     td.reserve(features, active);
@@ -204,6 +210,15 @@ void Agent::Impl::reserveFor(std::uint32_t features, std::size_t active) {
 }
 
 float Agent::Impl::learnedReward(float reward, bool final) {
+    const float r = clampedReward(reward);
+    if (learning && hasPrevious) {
+        if (final) brain->rewards.seeFinal(r);
+        else brain->rewards.see(r);
+    }
+    return r;
+}
+
+float Agent::Impl::clampedReward(float reward) {
     const float r = std::clamp(reward, -1.0f, 1.0f);
     if (r != reward) {
         ++stats.clampedRewards;
@@ -211,10 +226,6 @@ float Agent::Impl::learnedReward(float reward, bool final) {
             core::warn("a reward of %g was clamped to [-1, 1] (rewards are expected in [-1, 1]; reported once per "
                        "agent, counted in stats.clamped_rewards)", static_cast<double>(reward));
         }
-    }
-    if (learning && hasPrevious) {
-        if (final) brain->rewards.seeFinal(r);
-        else brain->rewards.see(r);
     }
     return r;
 }

@@ -34,6 +34,7 @@ struct Agent::Impl {
     // Agent::update and Agent::updateDemonstrated (`demonstrated`: the action the host took).
     std::uint32_t step(float reward, ObservationView obs, float dt, ActionMask mask, const std::uint32_t* demonstrated);
     StepConstants constantsFor(float dt) const;
+    StepConstants constantsFor(float dt, const core::RewardRange& rewards) const;  // with these rewards seen
     // tau_discount, or the horizon the trials set with Adaptation::Horizon (core/horizon.hpp).
     float tauDiscount(float dt) const;
     // A real step's TD error trains the critic and actor (traces then decay by `decay`); the
@@ -52,9 +53,19 @@ struct Agent::Impl {
     // need (scratch, traces, weights). Called before anything changes: an allocation failure
     // then leaves the agent as it was.
     void reserveFor(std::uint32_t features, std::size_t active);
+    void reserveBody(std::uint32_t features, std::size_t active);  // the same without the brain's part
     // The reward of the step that ends now, within [-1, 1] (a clamp is counted and reported, once
     // per agent); a learning agent adds it to its brain's reward range (`final`: a trial's end).
     float learnedReward(float reward, bool final = false);
+    float clampedReward(float reward);  // the same without adding it to the brain's range
+    // A batch's bodies of one brain, on several threads at once (shared_step.cpp): prepareShared
+    // makes the step against the brain as it is (no write to it; false: the step would grow or
+    // plan, and is made whole later), commitShared adds what it saw to the brain's measures (in
+    // body order), TdLearner::trainPart trains the weights part by part, finishShared marks the
+    // new traces.
+    bool prepareShared(float reward, ObservationView obs, float dt, core::LookupScratch& scratch, std::uint32_t parts);
+    void commitShared();
+    void finishShared();
     // An update that needed an RBF the budget did not allow: counted and reported (once).
     void noteBudgetReached();
     // probabilities: chooseAction's activations, divided by their sum (uniform over the allowed
@@ -87,6 +98,12 @@ struct Agent::Impl {
     bool learning = true;
     ActionSelection selection = ActionSelection::Sample;
     core::PrefetchQueue* ahead = nullptr;  // a batch's next agent, during one update (batch.cpp)
+    std::uint64_t batchCall = 0;  // the latest batch call that met this body (batch.cpp)
+    // What a prepared shared step leaves for commitShared and finishShared.
+    struct SharedStep {
+        bool marks = false, seesReward = false, seesDelta = false;
+        float reward = 0.0f, delta = 0.0f;
+    } sharedStep;
     // Of the latest update's choice; chooseAction's scratch before that (capacity 1 + numActions),
     // so that an update writes one small block where it wrote two.
     std::vector<float> probabilities;

@@ -84,11 +84,28 @@ struct FirstFailure {
 
 }  // namespace
 
+// What a call does with each agent (Batch::Impl::mode).
+enum class Mode : std::uint8_t {
+    InGroup,   // updated whole by its group's worker, in array order (updateGroups)
+    Prepared,  // a body whose group runs in phases (shared_step.cpp), prepared for them
+    Later,     // such a body whose step would grow the brain: made whole after the phases, in order
+    Failed,    // its preparation failed: left as it was
+};
+
+// The phases of a call, each a parallel run over its items.
+enum class Phase : std::uint8_t { Groups, Prepare, Train, Finish, Later };
+
 struct Batch::Impl {
     explicit Impl(const BatchOptions& o) : options(o) {}
 
     void updateGroups(std::uint32_t begin, std::uint32_t end) noexcept;
-    void runOverGroups();
+    void updateOne(std::uint32_t i) noexcept;  // a whole step, its failure recorded
+    // Which groups run in phases: those of two or more bodies of a brain that does not plan, none
+    // of them listed twice or shown an action.
+    void choosePhasedGroups(const BatchStep& s);
+    void runPhase(Phase phase, std::uint32_t items, std::uint32_t minRange);
+    void runPhaseItems(Phase phase, std::uint32_t begin, std::uint32_t end, std::uint32_t worker) noexcept;
+    void recordFailure(std::uint32_t i) noexcept;  // of the exception being handled
 
     BatchOptions options;
     std::unique_ptr<core::WorkerPool> pool;  // started on the first update (own pool only)
@@ -101,6 +118,15 @@ struct Batch::Impl {
     std::vector<ObservationView> views;    // per agent, into the packed arrays
     BrainGroups brainGroups;
     FirstFailure failure;
+
+    // Groups in phases: their agents in `phased` (phasedStart per group, plus an end), each
+    // agent's mode, a lookup scratch per worker, and the parts the features are trained in.
+    std::vector<Mode> mode;                  // per agent
+    std::vector<std::uint32_t> phased;
+    std::vector<std::uint32_t> phasedStart;
+    std::vector<core::LookupScratch> scratch;
+    std::uint32_t parts = 1;
+    Phase phase = Phase::Groups;
 };
 
 Batch::Batch(const BatchOptions& options) : impl_(std::make_unique<Impl>(options)) {
@@ -133,6 +159,8 @@ void Batch::Impl::updateGroups(std::uint32_t begin, std::uint32_t end) noexcept 
     if (first < last) s.agents[order[first]]->impl_->addArraysTo(ahead, true);
     const bool queues = ahead.bytes() * s.count >= kQueueFromCrowdBytes;
     for (std::uint32_t k = first; k < last; ++k) {
+        const std::uint32_t i = order[k];
+        if (mode[i] != Mode::InGroup) continue;  // a body of a group in phases: after this run
         // Stage st for the agent kStages - st places ahead: each link of an agent's chain of
         // pointers is asked for a whole update before the stage that reads it, and all of them
         // before the agent's own update. The Agent, which leads to the rest, one update earlier.
@@ -140,7 +168,6 @@ void Batch::Impl::updateGroups(std::uint32_t begin, std::uint32_t end) noexcept 
         for (unsigned st = 0; st < kStages; ++st) {
             if (k + kStages - st < last) s.agents[order[k + kStages - st]]->impl_->prefetch(st);
         }
-        const std::uint32_t i = order[k];
         Agent::Impl& agent = *s.agents[i]->impl_;
         if (queues && k + 1 < last) {
             const Agent::Impl& next = *s.agents[order[k + 1]]->impl_;
@@ -148,48 +175,140 @@ void Batch::Impl::updateGroups(std::uint32_t begin, std::uint32_t end) noexcept 
             next.addArraysTo(ahead, next.brain != agent.brain);
             agent.ahead = &ahead;
         }
-        ErrorCode code = ErrorCode::Internal;
-        const char* what = "unknown exception";
-        try {
-            if (s.demonstrated != nullptr && s.demonstrated[i] != kAgentChooses) {
-                s.agents[i]->updateDemonstrated(s.rewards[i], views[i], s.dt, s.demonstrated[i]);
-                s.actions[i] = s.demonstrated[i];
-            } else {
-                s.actions[i] = s.agents[i]->update(s.rewards[i], views[i], s.dt);
-            }
-            agent.ahead = nullptr;
-            continue;
-        } catch (const Error& e) {
-            code = e.code();
-            failure.record(i, code, e.what());
-        } catch (const std::bad_alloc&) {
-            code = ErrorCode::OutOfMemory;
-            failure.record(i, code, "out of memory");
-        } catch (const std::exception& e) {
-            failure.record(i, code, e.what());
-        } catch (...) {
-            failure.record(i, code, what);
-        }
+        updateOne(i);
         agent.ahead = nullptr;
-        if (s.results != nullptr) s.results[i] = static_cast<int>(code);
     }
 }
 
-void Batch::Impl::runOverGroups() {
+void Batch::Impl::updateOne(std::uint32_t i) noexcept {
+    const BatchStep& s = *step;
+    try {
+        if (s.demonstrated != nullptr && s.demonstrated[i] != kAgentChooses) {
+            s.agents[i]->updateDemonstrated(s.rewards[i], views[i], s.dt, s.demonstrated[i]);
+            s.actions[i] = s.demonstrated[i];
+        } else {
+            s.actions[i] = s.agents[i]->update(s.rewards[i], views[i], s.dt);
+        }
+    } catch (...) {
+        recordFailure(i);
+    }
+}
+
+void Batch::Impl::recordFailure(std::uint32_t i) noexcept {
+    ErrorCode code = ErrorCode::Internal;
+    try {
+        throw;
+    } catch (const Error& e) {
+        code = e.code();
+        failure.record(i, code, e.what());
+    } catch (const std::bad_alloc&) {
+        code = ErrorCode::OutOfMemory;
+        failure.record(i, code, "out of memory");
+    } catch (const std::exception& e) {
+        failure.record(i, code, e.what());
+    } catch (...) {
+        failure.record(i, code, "unknown exception");
+    }
+    if (step->results != nullptr) step->results[i] = static_cast<int>(code);
+}
+
+void Batch::Impl::choosePhasedGroups(const BatchStep& s) {
+    static std::atomic<std::uint64_t> calls{0};
+    const std::uint64_t call = ++calls;  // marks the bodies this call has met (an agent listed twice)
     const auto groups = static_cast<std::uint32_t>(groupStart.size() - 1);
-    const TaskFunction task = [](std::uint32_t begin, std::uint32_t end, std::uint32_t, void* self) {
-        static_cast<Impl*>(self)->updateGroups(begin, end);
+    phased.clear();
+    phasedStart.clear();
+    for (std::uint32_t g = 0; g < groups; ++g) {
+        const std::uint32_t first = groupStart[g], last = groupStart[g + 1];
+        const Agent::Impl& lead = *s.agents[order[first]]->impl_;
+        if (last - first < 2 || !lead.sharesBrain || lead.desc.planning) continue;
+        // A body listed twice, or shown an action, keeps its group in array order on one worker.
+        bool inOrder = false;
+        for (std::uint32_t k = first; k < last && !inOrder; ++k) {
+            const std::uint32_t i = order[k];
+            Agent::Impl& body = *s.agents[i]->impl_;
+            inOrder = (s.demonstrated != nullptr && s.demonstrated[i] != kAgentChooses) || body.batchCall == call;
+            body.batchCall = call;
+        }
+        if (inOrder) continue;
+        phasedStart.push_back(static_cast<std::uint32_t>(phased.size()));
+        for (std::uint32_t k = first; k < last; ++k) {
+            mode[order[k]] = Mode::Prepared;
+            phased.push_back(order[k]);
+        }
+    }
+    phasedStart.push_back(static_cast<std::uint32_t>(phased.size()));
+}
+
+void Batch::Impl::runPhaseItems(Phase p, std::uint32_t begin, std::uint32_t end, std::uint32_t worker) noexcept {
+    const BatchStep& s = *step;
+    switch (p) {
+        case Phase::Groups:
+            updateGroups(begin, end);
+            return;
+        case Phase::Prepare: {
+            core::LookupScratch& mine = scratch[worker % scratch.size()];
+            for (std::uint32_t k = begin; k < end; ++k) {
+                if (k + 2 < end) core::prefetchLine(s.agents[phased[k + 2]]->impl_.get());
+                const std::uint32_t i = phased[k];
+                if (mode[i] != Mode::Prepared) continue;
+                Agent::Impl& body = *s.agents[i]->impl_;
+                try {
+                    if (body.prepareShared(s.rewards[i], views[i], s.dt, mine, parts)) {
+                        s.actions[i] = body.previousAction;
+                    } else {
+                        mode[i] = Mode::Later;
+                    }
+                } catch (...) {
+                    mode[i] = Mode::Failed;
+                    recordFailure(i);
+                }
+            }
+            return;
+        }
+        case Phase::Train:
+            // Item = (group, part): the part's weights take every prepared body's change, in order.
+            for (std::uint32_t t = begin; t < end; ++t) {
+                const std::uint32_t g = t / parts, part = t % parts;
+                for (std::uint32_t k = phasedStart[g]; k < phasedStart[g + 1]; ++k) {
+                    const std::uint32_t i = phased[k];
+                    if (mode[i] != Mode::Prepared) continue;
+                    Agent::Impl& body = *s.agents[i]->impl_;
+                    body.td.trainPart(body.weights, part);
+                }
+            }
+            return;
+        case Phase::Finish:
+            for (std::uint32_t k = begin; k < end; ++k) {
+                const std::uint32_t i = phased[k];
+                if (mode[i] == Mode::Prepared) s.agents[i]->impl_->finishShared();
+            }
+            return;
+        case Phase::Later:
+            for (std::uint32_t g = begin; g < end; ++g) {
+                for (std::uint32_t k = phasedStart[g]; k < phasedStart[g + 1]; ++k) {
+                    if (mode[phased[k]] == Mode::Later) updateOne(phased[k]);
+                }
+            }
+            return;
+    }
+}
+
+void Batch::Impl::runPhase(Phase p, std::uint32_t items, std::uint32_t minRange) {
+    if (items == 0) return;
+    phase = p;
+    const TaskFunction task = [](std::uint32_t begin, std::uint32_t end, std::uint32_t worker, void* self) {
+        auto* impl = static_cast<Impl*>(self);
+        impl->runPhaseItems(impl->phase, begin, end, worker);
     };
-    // Ranges of about 32 agents: small enough to balance, large enough that a hand-off is cheap.
-    const std::uint32_t minRange = std::max<std::uint32_t>(1, 32u * groups / std::max<std::uint32_t>(1, static_cast<std::uint32_t>(step->count)));
     const TaskScheduler& host = options.scheduler;
     if (host.enqueueTask != nullptr) {
-        if (void* handle = host.enqueueTask(task, groups, minRange, this, host.userContext)) {
+        if (void* handle = host.enqueueTask(task, items, minRange, this, host.userContext)) {
             host.finishTask(handle, host.userContext);
         }
         return;
     }
-    pool->run(task, groups, minRange, this);
+    pool->run(task, items, minRange, this);
 }
 
 namespace {
@@ -235,6 +354,11 @@ void Batch::update(const BatchStep& s) {
         b.order.resize(s.count);
         b.groupStart.reserve(s.count + 1);  // the sort below allocates nothing
         b.brainGroups.reset(s.count);
+        b.mode.assign(s.count, Mode::InGroup);
+        b.phased.reserve(s.count);
+        b.phasedStart.reserve(s.count + 1);
+        b.parts = std::min<std::uint32_t>(64, std::max(1u, b.options.workerCount));
+        b.scratch.resize(std::max(1u, b.options.workerCount));
         if (b.options.scheduler.enqueueTask == nullptr && !b.pool) {
             try {
                 b.pool = std::make_unique<core::WorkerPool>(b.options.workerCount);
@@ -296,8 +420,27 @@ void Batch::update(const BatchStep& s) {
     for (std::uint32_t g = groups; g > 0; --g) b.groupStart[g] = b.groupStart[g - 1];
     b.groupStart[0] = 0;
 
+    b.choosePhasedGroups(s);
+
     b.step = &s;
-    b.runOverGroups();
+    // Ranges of about 32 agents: small enough to balance, large enough that a hand-off is cheap.
+    const auto minRangeFor = [&s](std::uint32_t items) {
+        return std::max<std::uint32_t>(1, static_cast<std::uint32_t>(32u * std::uint64_t(items) / std::max<std::size_t>(1, s.count)));
+    };
+    b.runPhase(Phase::Groups, groups, minRangeFor(groups));
+    if (!b.phased.empty()) {
+        // The bodies of a brain in phases (shared_step.cpp, docs/crowds.md): each acts against the
+        // brain as this call found it, then their changes are applied in array order.
+        const auto bodies = static_cast<std::uint32_t>(b.phased.size());
+        const auto phasedGroups = static_cast<std::uint32_t>(b.phasedStart.size() - 1);
+        b.runPhase(Phase::Prepare, bodies, 32);
+        for (std::uint32_t i : b.phased) {
+            if (b.mode[i] == Mode::Prepared) s.agents[i]->impl_->commitShared();
+        }
+        b.runPhase(Phase::Train, phasedGroups * b.parts, 1);
+        b.runPhase(Phase::Finish, bodies, 64);
+        b.runPhase(Phase::Later, phasedGroups, 1);
+    }
     b.step = nullptr;
     b.failure.rethrow();
 }

@@ -74,8 +74,9 @@ std::uint64_t StateRepresentation::cellHash(const std::int32_t* coords) const {
 
 std::uint32_t StateRepresentation::addFeature(std::uint64_t key, const float* centre) {
     // Everything that allocates comes first; from the first change that stays on, nothing can fail.
-    cellCoords(centre, coords_.data());
-    const std::uint64_t hash = cellHash(coords_.data());
+    std::array<std::int32_t, kMaxDims> coords{};
+    cellCoords(centre, coords.data());
+    const std::uint64_t hash = cellHash(coords.data());
     Array& array = arrays_[key];
     Cell* added = nullptr;
     try {
@@ -266,7 +267,7 @@ float StateRepresentation::farthestDistance2(const float* bounds, const float* p
 }
 
 bool StateRepresentation::scanCell(const Cell& c, const ScanParams& params, bool boxes, bool alone,
-                                   std::vector<ActiveFeature>& out) const {
+                                   std::vector<ActiveFeature>& out, LookupScratch& scratch) const {
     // The margin keeps an RBF whose distance rounds differently in the scan (a box distance is
     // never more than any of its centres' distances).
     const float reach = params.cutoff2 * 1.0001f;
@@ -294,13 +295,13 @@ bool StateRepresentation::scanCell(const Cell& c, const ScanParams& params, bool
         const std::size_t end = std::min(blocks, chunk + kChunk);
         kernels_->boxesWithin(params, c.blockBounds.data() + chunk / kScanLanes * boundsGroupFloats(), end - chunk,
                               reach, masks);
-        blocksTested_ += static_cast<std::uint32_t>(end - chunk);
+        scratch.blocksTested += static_cast<std::uint32_t>(end - chunk);
         // Runs of set bits, 64 blocks at a time (a run across two words is two scans).
         for (std::size_t w = chunk; w < end; w += 64) {
             std::uint64_t bits = 0;
             std::memcpy(&bits, masks + (w - chunk) / kScanLanes, sizeof bits);
             if (end - w < 64) bits &= (std::uint64_t(1) << (end - w)) - 1;
-            blocksKept_ += static_cast<std::uint32_t>(__builtin_popcountll(bits));
+            scratch.blocksKept += static_cast<std::uint32_t>(__builtin_popcountll(bits));
             while (bits != 0) {
                 const auto start = static_cast<std::size_t>(__builtin_ctzll(bits));
                 const std::uint64_t rest = ~(bits >> start);
@@ -320,29 +321,30 @@ bool StateRepresentation::scanCell(const Cell& c, const ScanParams& params, bool
     return nearOne;
 }
 
-std::size_t StateRepresentation::neighbourCandidates(const float* point) const {
+std::size_t StateRepresentation::neighbourCandidates(const float* point, LookupScratch& scratch) const {
     // Distinct neighbouring cell coordinates per dimension (wrapping on circular sensors).
-    cellCoords(point, coords_.data());
+    auto& candidates = scratch.candidates;
+    cellCoords(point, scratch.coords.data());
     std::size_t neighbours = 1;
     for (std::uint32_t d = 0; d < numContinuous_; ++d) {
         std::uint8_t n = 0;
         for (int off = -1; off <= 1; ++off) {
-            std::int32_t c = coords_[d] + off;
+            std::int32_t c = scratch.coords[d] + off;
             if (circular_[d]) c = (c % cellsPerDim_ + cellsPerDim_) % cellsPerDim_;
             else if (c < 0 || c >= cellsPerDim_) continue;
             bool seen = false;
-            for (std::uint8_t k = 0; k < n; ++k) seen |= candidates_[d * 3 + k] == c;
-            if (!seen) candidates_[d * 3 + n++] = c;
+            for (std::uint8_t k = 0; k < n; ++k) seen |= candidates[d * 3 + k] == c;
+            if (!seen) candidates[d * 3 + n++] = c;
         }
-        candidateCount_[d] = n;
-        offsets_[d] = 0;
+        scratch.candidateCount[d] = n;
+        scratch.offsets[d] = 0;
         neighbours *= n;
     }
     return neighbours;
 }
 
 bool StateRepresentation::find(const std::int32_t* discrete, const float* continuous,
-                               std::vector<ActiveFeature>& out, PrefetchQueue* ahead) const {
+                               std::vector<ActiveFeature>& out, LookupScratch& scratch, PrefetchQueue* ahead) const {
     out.clear();
     // Without discrete sensors there is at most one array: begin() finds it without reading the
     // map's bucket array, one cache miss less for a crowd's update.
@@ -352,7 +354,7 @@ bool StateRepresentation::find(const std::int32_t* discrete, const float* contin
 
     // An array of one cell (every array below resolution 16) is read whole: a lookup has at least
     // one neighbour cell, and skipping the candidates' scratch spares a crowd's update its misses.
-    const std::size_t neighbours = cells.size() <= 1 ? 1 : neighbourCandidates(continuous);
+    const std::size_t neighbours = cells.size() <= 1 ? 1 : neighbourCandidates(continuous, scratch);
 
     ScanParams params;
     params.point = continuous;
@@ -363,32 +365,34 @@ bool StateRepresentation::find(const std::int32_t* discrete, const float* contin
     params.negInv2Sigma2 = -1.0f / (2.0f * sigma_ * sigma_);
     params.ahead = ahead;
     bool nearOne = false;
-    const bool boxes = wholeLookupsLeft_ == 0;
-    if (!boxes) --wholeLookupsLeft_;
+    const bool boxes = scratch.wholeLookupsLeft == 0;
+    if (!boxes) --scratch.wholeLookupsLeft;
     if (cells.size() <= neighbours) {
         // A coarse grid (low resolution, many sensors): the array has no more cells than the
         // neighbourhood, so reading them all costs no more and needs no hashing.
-        for (const auto& entry : cells) nearOne |= scanCell(entry.second, params, boxes, cells.size() == 1, out);
+        for (const auto& entry : cells) nearOne |= scanCell(entry.second, params, boxes, cells.size() == 1, out, scratch);
     } else {
-        visited_.clear();
+        auto& visited = scratch.visited;
+        auto& offsets = scratch.offsets;
+        visited.clear();
         while (true) {
-            for (std::uint32_t d = 0; d < numContinuous_; ++d) neighbour_[d] = candidates_[d * 3 + offsets_[d]];
-            const std::uint64_t hash = cellHash(neighbour_.data());
+            for (std::uint32_t d = 0; d < numContinuous_; ++d) scratch.neighbour[d] = scratch.candidates[d * 3 + offsets[d]];
+            const std::uint64_t hash = cellHash(scratch.neighbour.data());
             auto cell = cells.find(hash);
             // Two neighbour cells whose hashes collide share one list: visit it once.
-            if (cell != cells.end() && (exactCellKeys_ || std::find(visited_.begin(), visited_.end(), hash) == visited_.end())) {
-                if (!exactCellKeys_) visited_.push_back(hash);
-                nearOne |= scanCell(cell->second, params, boxes, false, out);
+            if (cell != cells.end() && (exactCellKeys_ || std::find(visited.begin(), visited.end(), hash) == visited.end())) {
+                if (!exactCellKeys_) visited.push_back(hash);
+                nearOne |= scanCell(cell->second, params, boxes, false, out, scratch);
             }
             std::uint32_t d = 0;
             for (; d < numContinuous_; ++d) {  // odometer over the neighbour cells
-                if (++offsets_[d] < candidateCount_[d]) break;
-                offsets_[d] = 0;
+                if (++offsets[d] < scratch.candidateCount[d]) break;
+                offsets[d] = 0;
             }
             if (d == numContinuous_) break;
         }
     }
-    if (boxes) judgeBoxes();
+    if (boxes) judgeBoxes(scratch);
     return nearOne;
 }
 
@@ -420,15 +424,15 @@ void StateRepresentation::addArraysTo(PrefetchQueue& q) const noexcept {
     if (const Cell* cell = onlyCell()) q.add(cell->centres.data(), cell->centres.size() * sizeof(float));
 }
 
-void StateRepresentation::judgeBoxes() const {
-    if (blocksTested_ < kJudgeBlocks) return;
+void StateRepresentation::judgeBoxes(LookupScratch& scratch) const {
+    if (scratch.blocksTested < kJudgeBlocks) return;
     // Skipped blocks save (dims + 1) * kScanLanes floats each, every box tested costs 2 * dims:
     // the boxes pay when kept / tested < 1 - dims / (4 (dims + 1)).
     const std::uint64_t perBlock = 4 * (std::uint64_t(numContinuous_) + 1);
-    if (std::uint64_t(blocksKept_) * perBlock > std::uint64_t(blocksTested_) * (perBlock - numContinuous_)) {
-        wholeLookupsLeft_ = kWholeLookups;
+    if (std::uint64_t(scratch.blocksKept) * perBlock > std::uint64_t(scratch.blocksTested) * (perBlock - numContinuous_)) {
+        scratch.wholeLookupsLeft = kWholeLookups;
     }
-    blocksTested_ = blocksKept_ = 0;
+    scratch.blocksTested = scratch.blocksKept = 0;
 }
 
 }  // namespace verve::core

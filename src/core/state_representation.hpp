@@ -19,6 +19,20 @@
 
 namespace verve::core {
 
+// A lookup's scratch, and its measure of whether block boxes pay (StateRepresentation::find). A
+// representation keeps one for its own lookups; a batch that looks up the bodies of one brain on
+// several threads at once gives each worker its own (core/shared_step.hpp). Either way a lookup
+// finds the same features in the same order: the measure only chooses how cells are read.
+struct LookupScratch {
+    static constexpr std::uint32_t kMaxDims = DescriptorLimits::kMaxSensors;
+    std::uint32_t blocksTested = 0, blocksKept = 0;
+    std::uint32_t wholeLookupsLeft = 0;
+    std::array<std::int32_t, kMaxDims> coords{}, neighbour{}, offsets{};
+    std::array<std::int32_t, 3 * kMaxDims> candidates{};  // per dimension up to 3 distinct cell coordinates
+    std::array<std::uint8_t, kMaxDims> candidateCount{};
+    std::vector<std::uint64_t> visited;  // cell hashes already read this activation
+};
+
 class StateRepresentation {
 public:
     explicit StateRepresentation(const AgentDescriptor& desc);
@@ -34,22 +48,30 @@ public:
     // Room for lookups once there are `features` RBFs: find() then allocates nothing, given an
     // output vector with foundCapacity(features) room (the scan writes whole lanes, then trims).
     // A lookup visits at most 3^n cells, each once, and never more cells than RBFs.
-    void reserve(std::uint32_t features) {
-        if (!exactCellKeys_) reserveRoom(visited_,  // only hashed keys use it; the minimum fits in 32 bits
+    void reserve(std::uint32_t features) { reserve(own_, features); }
+    // The same for a scratch of the caller's.
+    void reserve(LookupScratch& scratch, std::uint32_t features) const {
+        if (!exactCellKeys_) reserveRoom(scratch.visited,  // only hashed keys use it; the minimum fits in 32 bits
                                          static_cast<std::size_t>(std::min<std::uint64_t>(features, maxNeighbours_)));
     }
     static std::size_t foundCapacity(std::uint32_t features) { return std::size_t(features) + kScanLanes; }
     // The same without allocating; returns whether some RBF lies within one width.
     // `ahead`: a batch's next agent, asked for as the scan goes (prefetch.hpp).
     bool find(const std::int32_t* discrete, const float* continuous, std::vector<ActiveFeature>& out,
-              PrefetchQueue* ahead = nullptr) const;
+              PrefetchQueue* ahead = nullptr) const {
+        return find(discrete, continuous, out, own_, ahead);
+    }
+    // The same with the caller's scratch (reserved for this representation): lookups with
+    // scratches of their own may run at once on several threads (nothing else may change it then).
+    bool find(const std::int32_t* discrete, const float* continuous, std::vector<ActiveFeature>& out,
+              LookupScratch& scratch, PrefetchQueue* ahead = nullptr) const;
 
     std::uint32_t featureCount() const { return featureCount_; }
     std::uint32_t numContinuous() const { return numContinuous_; }
     const std::uint8_t* circular() const { return circular_.data(); }  // per continuous sensor: 1 when it wraps
     std::uint64_t keyCount() const { return keyCount_; }
     // Whether the next lookup reads cells whole rather than through their block boxes (judgeBoxes).
-    bool readsCellsWhole() const { return wholeLookupsLeft_ > 0; }
+    bool readsCellsWhole() const { return own_.wholeLookupsLeft > 0; }
     // Every feature's discrete key and centre (numContinuous values), by feature index. Not for
     // the hot path: the grid cells hold the only copy of a centre, so this walks all of them.
     void features(std::vector<std::uint64_t>& keys, std::vector<float>& centres) const;
@@ -99,10 +121,11 @@ private:
     // Without `boxes`, a cell is read whole, never through its block boxes (same result). An array's
     // only cell (`alone`) skips the test of its own box: it holds every RBF the agent made along
     // its way, so the test nearly always passes, and its bounds would be one more cache miss.
-    bool scanCell(const Cell& c, const ScanParams& params, bool boxes, bool alone, std::vector<ActiveFeature>& out) const;
+    bool scanCell(const Cell& c, const ScanParams& params, bool boxes, bool alone, std::vector<ActiveFeature>& out,
+                  LookupScratch& scratch) const;
     // After a lookup that tested block boxes: once enough blocks were tested, and nearly all of
-    // them passed, the next kWholeLookups lookups read their cells whole (the counters below).
-    void judgeBoxes() const;
+    // them passed, the next kWholeLookups lookups read their cells whole (the scratch's counters).
+    void judgeBoxes(LookupScratch& scratch) const;
     // Squared distance from a point to a bounding box (per dimension: lowest, highest), the
     // shorter way on circular sensors; and the same to the box's farthest corner.
     float boxDistance2(const float* bounds, const float* point) const;
@@ -124,16 +147,16 @@ private:
     const Array* onlyArray() const noexcept;
     const Cell* onlyCell() const noexcept;
     void cellCoords(const float* point, std::int32_t* coords) const;
-    // Fills candidates_ (up to 3 distinct cell coordinates per dimension around the point) and
-    // resets the odometer offsets_; returns the number of neighbour cells.
-    std::size_t neighbourCandidates(const float* point) const;
+    // Fills the scratch's candidates (up to 3 distinct cell coordinates per dimension around the
+    // point) and resets its odometer offsets; returns the number of neighbour cells.
+    std::size_t neighbourCandidates(const float* point, LookupScratch& scratch) const;
     std::uint64_t cellHash(const std::int32_t* coords) const;
     void allocateFullLattice();
 
     std::vector<std::uint32_t> discreteCounts_;
     // Per continuous sensor, 1 when -1 and 1 meet. Inline (kMaxSensors), like the neighbour
     // scratch below: small blocks of their own would each be a cache miss of a crowd's update.
-    static constexpr std::uint32_t kMaxDims = DescriptorLimits::kMaxSensors;
+    static constexpr std::uint32_t kMaxDims = LookupScratch::kMaxDims;
     std::array<std::uint8_t, kMaxDims> circular_{};
     std::uint32_t numContinuous_;
     std::uint32_t resolution_;
@@ -159,16 +182,11 @@ private:
     // boxes are measured again. Either way a lookup finds the same features, in the same order.
     static constexpr std::uint32_t kJudgeBlocks = 256;   // blocks tested before a verdict
     static constexpr std::uint32_t kWholeLookups = 128;   // lookups read whole after a verdict
-    mutable std::uint32_t blocksTested_ = 0, blocksKept_ = 0;
-    mutable std::uint32_t wholeLookupsLeft_ = 0;
 
-    // Scratch for neighbour enumeration (no allocation once warmed up). Mutable: lookups are
-    // logically const, and one agent is used by one thread at a time. Last: a lookup in an array
-    // of one cell reads none of it, and the members above then share fewer cache lines.
-    mutable std::array<std::int32_t, kMaxDims> coords_{}, neighbour_{}, offsets_{};
-    mutable std::array<std::int32_t, 3 * kMaxDims> candidates_{};  // per dimension up to 3 distinct cell coordinates
-    mutable std::array<std::uint8_t, kMaxDims> candidateCount_{};
-    mutable std::vector<std::uint64_t> visited_;  // cell hashes already read this activation
+    // The scratch of the representation's own lookups (no allocation once warmed up). Mutable:
+    // lookups are logically const, and one agent is used by one thread at a time. Last: a lookup
+    // in an array of one cell reads none of it, and the members above then share fewer cache lines.
+    mutable LookupScratch own_;
 };
 
 }  // namespace verve::core

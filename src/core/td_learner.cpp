@@ -29,9 +29,15 @@ float TdLearner::value(const WeightTable& w, const std::vector<ActiveFeature>& p
 std::uint32_t TdLearner::chooseAction(const WeightTable& w, const std::vector<ActiveFeature>& phi, Rng& rng,
                                       std::vector<float>& activations, float& value, const std::uint8_t* allowed,
                                       bool greedy, float uniformAtOrBelow, PrefetchQueue* ahead) const {
-    // One pass over a row's first columns, [value, policy[A]]; then the value leaves the front.
+    // One pass over a row's first columns, [value, policy[A]].
     activations.resize(stride_);
     kernels_->rowSums(w.data().data(), w.stride(), phi.data(), phi.size(), stride_, activations.data(), ahead);
+    return chooseFromSums(rng, activations, value, allowed, greedy, uniformAtOrBelow);
+}
+
+std::uint32_t TdLearner::chooseFromSums(Rng& rng, std::vector<float>& activations, float& value,
+                                        const std::uint8_t* allowed, bool greedy, float uniformAtOrBelow) const {
+    // The value leaves the front.
     value = activations[WeightLayout::kValue];
     activations.erase(activations.begin());
     // The largest preference, not the largest activation: sigmoids that saturate at 1 or
@@ -78,23 +84,27 @@ std::uint32_t TdLearner::uniformAllowed(Rng& rng, const std::uint8_t* allowed) c
     return 0;  // unreachable: callers allow at least one action
 }
 
-void TdLearner::trainAndDecay(WeightTable& w, float delta, TdRates rates, float decay, PrefetchQueue* ahead) {
+bool TdLearner::stepFor(float delta, TdRates rates, float* step) const {
     // Learning never takes a weight step near kStepLimit (it bootstraps from bounded values), but
     // weights a hostile save brings up to AgentSnapshot::kWeightLimit could make one: clamped, every
     // step stays below half the float spacing at that limit, so no weight can be pushed past it.
     const float fastest = std::max(std::fabs(rates.value), std::fabs(rates.policy));
     if (fastest > 0.0f) delta = std::clamp(delta, -kStepLimit / fastest, kStepLimit / fastest);
     // A trace row [value, policy[A]] lines up with the first 1 + A weights of its feature's row.
-    float onStack[kStackStride];
-    float* step = stride_ <= kStackStride ? onStack : step_.data();
     std::fill_n(step, stride_, rates.policy * delta);
     step[0] = rates.value * delta;
-    // Bounded actor weights: every row trained now is clamped after the kernel has moved it, so
-    // remember the rows first (the kernel drops some from the live list as it goes). Traces are never
-    // negative (mark() keeps the larger of activation and trace), so every actor weight moves the
-    // way rates.policy * delta points: only when that side is bounded is there anything to clamp
-    // (with the habit ceiling alone, only after a positive TD error).
-    const bool bounded = rates.policyRange.crossable(rates.policy * delta);
+    // Bounded actor weights: every row trained now is clamped after the kernel has moved it. Traces
+    // are never negative (mark() keeps the larger of activation and trace), so every actor weight
+    // moves the way rates.policy * delta points: only when that side is bounded is there anything
+    // to clamp (with the habit ceiling alone, only after a positive TD error).
+    return rates.policyRange.crossable(rates.policy * delta);
+}
+
+void TdLearner::trainAndDecay(WeightTable& w, float delta, TdRates rates, float decay, PrefetchQueue* ahead) {
+    float onStack[kStackStride];
+    float* step = stride_ <= kStackStride ? onStack : step_.data();
+    const bool bounded = stepFor(delta, rates, step);
+    // Remember the rows first: the kernel drops some from the live list as it goes.
     if (bounded) trained_.assign(live_.begin(), live_.begin() + liveCount_);
     TraceStep s;
     s.step = step;
@@ -104,11 +114,13 @@ void TdLearner::trainAndDecay(WeightTable& w, float delta, TdRates rates, float 
     s.threshold = threshold_;
     s.ahead = ahead;
     liveCount_ = kernels_->trainDecay(s, w.data().data(), traces_.data(), live_.data(), liveCount_);
-    if (bounded) {
-        for (std::uint32_t feature : trained_) {
-            float* policy = w.row(feature) + WeightLayout::kPolicy;
-            for (std::uint32_t a = 0; a < numActions_; ++a) policy[a] = rates.policyRange.clamp(policy[a]);
-        }
+    if (bounded) clampPolicy(w, trained_.data(), trained_.size(), rates.policyRange);
+}
+
+void TdLearner::clampPolicy(WeightTable& w, const std::uint32_t* rows, std::size_t count, PolicyRange range) const {
+    for (std::size_t i = 0; i < count; ++i) {
+        float* policy = w.row(rows[i]) + WeightLayout::kPolicy;
+        for (std::uint32_t a = 0; a < numActions_; ++a) policy[a] = range.clamp(policy[a]);
     }
 }
 

@@ -106,9 +106,33 @@ public:
                                float uniformAtOrBelow = -std::numeric_limits<float>::infinity(),
                                PrefetchQueue* ahead = nullptr) const;
 
+    // chooseAction's choice from the sums it made: `activations` holds [V(s), x_a...] (stride values).
+    std::uint32_t chooseFromSums(Rng& rng, std::vector<float>& activations, float& value, const std::uint8_t* allowed,
+                                 bool greedy, float uniformAtOrBelow) const;
+
     // w += eta * delta * e over the live traces, then e *= decay; traces whose every component
     // falls below the threshold are dropped. One pass: both follow the live list.
     void trainAndDecay(WeightTable& w, float delta, TdRates rates, float decay, PrefetchQueue* ahead = nullptr);
+    // Staged training (td_staged.cpp), for a batch that updates the bodies of one brain on several
+    // threads (core/shared_step.hpp). stage() keeps what trainAndDecay would do, with the live
+    // features sorted into `parts` parts (reserveStaged(parts) first); trainPart(w, p) does it for
+    // part p's features only, so the parts of many bodies can train one brain's weights at once on
+    // different threads: each weight still takes each body's step in body order. finishStaged()
+    // then drops the traces that fell below the threshold, keeping the live list's order.
+    void reserveStaged(std::uint32_t parts);
+    void stage(float delta, TdRates rates, float decay, std::uint32_t parts);
+    bool staged() const { return staged_; }
+    void trainPart(WeightTable& w, std::uint32_t part);
+    // chooseAction as it would be once this body's staged step is applied (the features' rows of
+    // `w` as trainPart would leave them): a single update acts after its own learning step.
+    std::uint32_t chooseActionStaged(const WeightTable& w, const std::vector<ActiveFeature>& phi, Rng& rng,
+                                     std::vector<float>& activations, float& value, bool greedy,
+                                     float uniformAtOrBelow) const;
+    void finishStaged();
+    static std::uint32_t partOf(std::uint32_t feature, std::uint32_t parts) {
+        return (feature >> 4) % parts;  // 16 rows together: threads seldom share a cache line
+    }
+
     // e = max(e, phi) for the critic; e_a = max(e_a, phi) for the chosen action's neuron.
     void mark(const std::vector<ActiveFeature>& phi, std::uint32_t action, std::uint32_t featureCount);
     void clear();
@@ -135,6 +159,10 @@ public:
                  std::uint32_t featureCount);
 
 private:
+    // eta * delta per trace component, into `step` (stride_ values), delta clamped as trainAndDecay
+    // explains; returns whether the actor's range can be crossed (then the trained rows are clamped).
+    bool stepFor(float delta, TdRates rates, float* step) const;
+    void clampPolicy(WeightTable& w, const std::uint32_t* rows, std::size_t count, PolicyRange range) const;
     // A hopeless state, or activations that are not finite: a uniform choice among the allowed.
     std::uint32_t uniformAllowed(Rng& rng, const std::uint8_t* allowed) const;
     void grow(std::uint32_t featureCount);
@@ -154,6 +182,14 @@ private:
     static constexpr std::uint32_t kStackStride = 16;
     std::vector<float> step_;
     std::vector<std::uint32_t> trained_; // rows a bounded update trained (scratch)
+    // Staged training: the live features by part (partStart_[p] .. partStart_[p + 1]), the step.
+    std::vector<std::uint32_t> stagedLive_;
+    std::vector<std::uint32_t> partStart_;
+    std::vector<float> stagedStep_;
+    float stagedDecay_ = 0.0f;
+    PolicyRange stagedRange_;
+    bool stagedBounded_ = false;
+    bool staged_ = false;
 };
 
 }  // namespace verve::core

@@ -1,6 +1,7 @@
-// Many agents through the C ABI: verve_batch_update gives exactly the results of updating each
-// agent in array order, for 1, 2, 3 and 8 threads of Verve's pool and on a host's job system;
-// bodies of one brain share what they learn; bad input anywhere refuses the whole call.
+// Many agents through the C ABI: verve_batch_update gives separate agents exactly the results of
+// updating each in array order, and the bodies of a brain the results of its phases (docs/crowds.md),
+// the same for 1, 2, 3 and 8 threads of Verve's pool and on a host's job system; bodies of one
+// brain share what they learn; bad input anywhere refuses the whole call.
 #include <gtest/gtest.h>
 
 #include <algorithm>
@@ -46,6 +47,7 @@ struct Crowd {
     std::vector<verve_brain*> brains;
     std::vector<verve_agent*> owned;  // each agent once, to destroy
     std::vector<verve_agent*> items;  // the batch's order
+    std::vector<bool> ownedBody, itemBody;  // which are bodies of a brain
 
     Crowd() {
         for (uint64_t copy = 0; copy < 8; ++copy) add(10 * copy);
@@ -63,18 +65,21 @@ struct Crowd {
             verve_agent* a = nullptr;
             EXPECT_EQ(verve_agent_create(&d, &a), VERVE_OK) << verve_last_error();
             owned.push_back(a);
+            ownedBody.push_back(false);
             return a;
         };
         auto body = [&](std::size_t brain) {
             verve_agent* a = nullptr;
             EXPECT_EQ(verve_brain_create_body(brains[first + brain], &a), VERVE_OK) << verve_last_error();
             owned.push_back(a);
+            ownedBody.push_back(true);
             return a;
         };
         verve_agent* twice = agent(tiny);
         for (verve_agent* a : {twice, body(0), agent(grid), body(0), agent(planner), body(1), body(0), agent(tiny),
                                body(1), body(0), body(1), body(0), agent(grid), twice}) {
             items.push_back(a);
+            itemBody.push_back(ownedBody[static_cast<std::size_t>(std::find(owned.begin(), owned.end(), a) - owned.begin())]);
         }
     }
     ~Crowd() {
@@ -106,8 +111,25 @@ Inputs inputsFor(const Crowd& crowd, int step, const std::vector<uint32_t>& acti
 
 using Updater = std::function<void(const Crowd&, const Inputs&, std::vector<uint32_t>&)>;
 
-// Runs a crowd for 120 steps with trial ends; returns every action taken and the final saves.
-std::pair<std::vector<uint32_t>, std::vector<std::string>> run(const Updater& update) {
+// Every action taken and the final saves of a run; `bodies` false keeps only the separate agents'.
+struct Outcome {
+    std::vector<uint32_t> actions;
+    std::vector<std::string> saves;
+    std::vector<bool> actionOfBody, saveOfBody;
+    Outcome only(bool bodies) const {
+        Outcome r;
+        for (std::size_t i = 0; i < actions.size(); ++i) {
+            if (bodies || !actionOfBody[i]) r.actions.push_back(actions[i]);
+        }
+        for (std::size_t i = 0; i < saves.size(); ++i) {
+            if (bodies || !saveOfBody[i]) r.saves.push_back(saves[i]);
+        }
+        return r;
+    }
+};
+
+// Runs a crowd for 120 steps with trial ends.
+Outcome run(const Updater& update) {
     Crowd crowd;
     std::vector<uint32_t> actions(crowd.items.size(), 0), history;
     for (int step = 0; step < 120; ++step) {
@@ -117,9 +139,12 @@ std::pair<std::vector<uint32_t>, std::vector<std::string>> run(const Updater& up
             for (auto* a : crowd.owned) EXPECT_EQ(verve_agent_end_episode(a, 1.0f), VERVE_OK);
         }
     }
-    std::vector<std::string> saves;
-    for (auto* a : crowd.owned) saves.push_back(saved(a));
-    return {history, saves};
+    Outcome r;
+    r.actions = history;
+    for (auto* a : crowd.owned) r.saves.push_back(saved(a));
+    for (int step = 0; step < 120; ++step) r.actionOfBody.insert(r.actionOfBody.end(), crowd.itemBody.begin(), crowd.itemBody.end());
+    r.saveOfBody = crowd.ownedBody;
+    return r;
 }
 
 void sequential(const Crowd& crowd, const Inputs& in, std::vector<uint32_t>& actions) {
@@ -159,16 +184,24 @@ verve_batch* makeBatch(uint32_t workers) {
     return b;
 }
 
-TEST(Batch, SameResultsAsSequentialUpdatesForAnyThreadCount) {
-    const auto expected = run(sequential);
+// Separate agents: the results of single calls in array order. Bodies of a brain: those of the
+// batch's phases, the same for any number of threads.
+TEST(Batch, SameResultsForAnyThreadCount) {
+    const Outcome single = run(sequential);
+    verve_batch* one = makeBatch(1);
+    const Outcome expected = run(batched(one));
+    verve_batch_destroy(one);
+    EXPECT_EQ(expected.only(false).actions, single.only(false).actions) << "separate agents: other actions than single calls";
+    EXPECT_EQ(expected.only(false).saves, single.only(false).saves) << "separate agents: other agents than after single calls";
+    EXPECT_NE(expected.actions, single.actions) << "the bodies were updated as single calls: no phases ran";
     for (uint32_t workers : {1u, 2u, 3u, 8u}) {
         verve_batch* batch = makeBatch(workers);
         uint32_t count = 0;
         ASSERT_EQ(verve_batch_get_worker_count(batch, &count), VERVE_OK);
         EXPECT_EQ(count, workers);
-        const auto got = run(batched(batch));
-        EXPECT_EQ(got.first, expected.first) << workers << " workers: different actions";
-        EXPECT_EQ(got.second, expected.second) << workers << " workers: different agents afterwards";
+        const Outcome got = run(batched(batch));
+        EXPECT_EQ(got.actions, expected.actions) << workers << " workers: different actions";
+        EXPECT_EQ(got.saves, expected.saves) << workers << " workers: different agents afterwards";
         verve_batch_destroy(batch);
     }
 }
@@ -217,7 +250,9 @@ void* VERVE_CALL enqueueInline(verve_task_fn task, uint32_t count, uint32_t, voi
 void VERVE_CALL finishNever(void*, void* user) { static_cast<HostJobs*>(user)->badWorker = true; }
 
 TEST(Batch, SameResultsOnAHostJobSystem) {
-    const auto expected = run(sequential);
+    verve_batch* own = makeBatch(2);
+    const Outcome expected = run(batched(own));
+    verve_batch_destroy(own);
     for (bool threaded : {true, false}) {
         HostJobs host;
         verve_batch_desc d;
@@ -228,10 +263,11 @@ TEST(Batch, SameResultsOnAHostJobSystem) {
         d.user_context = &host;
         verve_batch* batch = nullptr;
         ASSERT_EQ(verve_batch_create(&d, &batch), VERVE_OK) << verve_last_error();
-        const auto got = run(batched(batch));
-        EXPECT_EQ(got.first, expected.first);
-        EXPECT_EQ(got.second, expected.second);
-        EXPECT_EQ(host.tasks.load(), 120) << "one task per batch update";
+        const Outcome got = run(batched(batch));
+        EXPECT_EQ(got.actions, expected.actions);
+        EXPECT_EQ(got.saves, expected.saves);
+        // Separate agents in one task; bodies of brains in four more (docs/crowds.md).
+        EXPECT_EQ(host.tasks.load(), 5 * 120) << "five tasks per batch update";
         if (threaded) {
             EXPECT_GE(host.ranges.load(), 2 * 120) << "the host's threads shared the work";
         }
@@ -615,6 +651,60 @@ TEST(Brain, BodiesShareWhatTheyLearn) {
     ASSERT_EQ(verve_agent_update(teacher, 1.0f, nullptr, 0, &here, 1, 0.1f, &action), VERVE_OK);
     verve_agent_destroy(teacher);
     verve_agent_destroy(pupil);
+}
+
+// A batch's bodies of one brain act against the brain as the call found it (docs/crowds.md): here
+// the odd bodies learn nothing in the last call, so each chooses what a copy of it, made just
+// before the call and learning nothing, chooses for the same input, and values its state alike,
+// though the even bodies before them in the array have learned in the same call by then.
+TEST(Brain, BodiesInABatchActOnTheBrainAsTheCallFoundIt) {
+    const verve_agent_desc d = shape(0, 2, 6, 3, 9);
+    verve_brain* brain = nullptr;
+    ASSERT_EQ(verve_brain_create(&d, &brain), VERVE_OK);
+    constexpr uint32_t kBodies = 12;
+    std::vector<verve_agent*> bodies(kBodies);
+    for (auto*& b : bodies) ASSERT_EQ(verve_brain_create_body(brain, &b), VERVE_OK);
+    std::vector<float> sensors(2 * kBodies), rewards(kBodies);
+    std::vector<uint32_t> actions(kBodies, 0);
+    for (uint32_t i = 0; i < kBodies; ++i) {
+        sensors[2 * i] = std::sin(1.7f * static_cast<float>(i));
+        sensors[2 * i + 1] = std::cos(0.7f * static_cast<float>(i));
+    }
+    verve_batch* batch = makeBatch(2);
+    auto step = [&] {
+        for (uint32_t i = 0; i < kBodies; ++i) rewards[i] = actions[i] == i % 3 ? 0.5f : -0.1f;
+        ASSERT_EQ(verve_batch_update(batch, bodies.data(), kBodies, rewards.data(), nullptr, nullptr, 0, sensors.data(),
+                                     nullptr, 2 * kBodies, 0.1f, actions.data(), nullptr),
+                  VERVE_OK)
+            << verve_last_error();
+    };
+    for (int t = 0; t < 30; ++t) step();  // every body's state now has its RBF: no step grows the brain
+    const std::string start = saved(bodies[0]);
+    std::vector<verve_agent*> copies(kBodies);
+    for (uint32_t i = 1; i < kBodies; i += 2) {
+        ASSERT_EQ(verve_agent_set_learning(bodies[i], 0), VERVE_OK);
+        const std::string xml = saved(bodies[i]);
+        ASSERT_EQ(verve_agent_load_memory(xml.data(), xml.size(), &copies[i]), VERVE_OK);
+    }
+    uint32_t before = 0, after = 0;
+    ASSERT_EQ(verve_brain_get_rbf_count(brain, &before), VERVE_OK);
+    step();
+    ASSERT_EQ(verve_brain_get_rbf_count(brain, &after), VERVE_OK);
+    ASSERT_EQ(before, after);
+    EXPECT_NE(saved(bodies[0]), start) << "the even bodies' changes reached the brain";
+    for (uint32_t i = 1; i < kBodies; i += 2) {
+        uint32_t action = 0;
+        ASSERT_EQ(verve_agent_update(copies[i], rewards[i], nullptr, 0, &sensors[2 * i], 2, 0.1f, &action), VERVE_OK);
+        EXPECT_EQ(actions[i], action) << "body " << i;
+        float bodyValue = 0.0f, copyValue = 0.0f;
+        ASSERT_EQ(verve_agent_get_value(bodies[i], &bodyValue), VERVE_OK);
+        ASSERT_EQ(verve_agent_get_value(copies[i], &copyValue), VERVE_OK);
+        EXPECT_EQ(bodyValue, copyValue) << "body " << i;
+        verve_agent_destroy(copies[i]);
+    }
+    verve_batch_destroy(batch);
+    for (auto* a : bodies) verve_agent_destroy(a);
+    verve_brain_destroy(brain);
 }
 
 TEST(Brain, BodiesHaveTheirOwnRandomStreamsAndTheSameSeedRepeats) {

@@ -3,10 +3,11 @@
 // demonstrated actions, verve_batch_update_demonstrated) on
 // Verve's pool or on a host's job system (ranges run in reverse), with packed or spaced
 // observations, bad values, wrong totals and NULL entries, between bodies made, handles destroyed
-// and brains saved. The same calls run on a twin world built alike, its batch steps done as single
-// updates in array order. Checks the promises of verve_c.h: a refused batch changes no member and
-// sets an error; an accepted one acts exactly as the single updates (the same actions, and the
-// same saves at the end); a brain's save reloads, as a brain and as an agent, to the same bytes.
+// and brains saved. The same calls run on a twin world built alike, its batch steps done by a batch
+// of one worker. Checks the promises of verve_c.h: a refused batch changes no member and sets an
+// error; an accepted one acts the same on any number of threads (the same verdicts and actions,
+// and the same saves at the end); a brain's save reloads, as a brain and as an agent, to the same
+// bytes. (That separate agents act as their single updates do, tests/capi/crowd_test.cpp checks.)
 #include <algorithm>
 #include <cstdint>
 #include <vector>
@@ -29,7 +30,19 @@ void* VERVE_CALL enqueueReversed(verve_task_fn task, uint32_t count, uint32_t mi
 }
 void VERVE_CALL finishNothing(void*, void*) {}
 
-// Made once: starting threads per input would be most of the run's time.
+// Made once: starting threads per input would be most of the run's time. The twin's has one worker.
+verve_batch* twinBatch() {
+    static verve_batch* const one = [] {
+        verve_batch_desc d;
+        verve_batch_desc_default(&d);
+        d.worker_count = 1;
+        verve_batch* b = nullptr;
+        VERVE_FUZZ_CHECK(verve_batch_create(&d, &b) == VERVE_OK);
+        return b;
+    }();
+    return one;
+}
+
 verve_batch* batch(bool host) {
     static verve_batch* const pool = [] {
         verve_batch_desc d;
@@ -104,7 +117,7 @@ struct Step {
 };
 
 // Mostly what a working game passes, so that batches are accepted and compared with the twin's
-// single updates; now and then anything (NaN, infinities, huge, wrong counts), so that refusals are.
+// batch; now and then anything (NaN, infinities, huge, wrong counts), so that refusals are.
 float mostlyGood(FuzzedDataProvider& in, float lo, float hi) {
     return in.ConsumeIntegralInRange<int>(0, 15) == 0 ? anyFloat(in, lo, hi) : in.ConsumeFloatingPointInRange<float>(lo, hi);
 }
@@ -171,62 +184,58 @@ Step readStep(FuzzedDataProvider& in, const World& world) {
     return s;
 }
 
-// The batch on world a; the same step on its twin b as single updates in array order.
-void batchStep(const Step& s, World& a, World& b) {
+// One batch call on a world's members.
+struct Outcome {
+    verve_result result = VERVE_OK;
+    std::vector<uint32_t> actions;
+    std::vector<verve_result> verdicts;
+};
+
+Outcome batchCall(verve_batch* batch, const Step& s, const World& w) {
     std::vector<verve_agent*> crowd;
-    for (size_t m : s.entries) crowd.push_back(m == kMaxMembers ? nullptr : a.members[m]);
+    for (size_t m : s.entries) crowd.push_back(m == kMaxMembers ? nullptr : w.members[m]);
     const uint32_t n = static_cast<uint32_t>(crowd.size());
-    std::vector<uint32_t> actions(n, UINT32_MAX);
-    std::vector<verve_result> results(n, VERVE_ERROR_INTERNAL);
-    const std::vector<uint64_t> before = a.steps();
+    Outcome o;
+    o.actions.assign(n, UINT32_MAX);
+    o.verdicts.assign(n, VERVE_ERROR_INTERNAL);
     const uint32_t* dOffsets = s.discreteOffsets.empty() ? nullptr : s.discreteOffsets.data();
     const uint32_t* cOffsets = s.continuousOffsets.empty() ? nullptr : s.continuousOffsets.data();
-    const verve_result r =
-        s.demonstrates
-            ? verve_batch_update_demonstrated(batch(s.host), crowd.data(), n, s.rewards.data(), s.discrete.data(), dOffsets,
-                                              s.discreteTotal, s.continuous.data(), cOffsets, s.continuousTotal, s.dt,
-                                              s.demonstrated.data(), actions.data(), results.data())
-            : verve_batch_update(batch(s.host), crowd.data(), n, s.rewards.data(), s.discrete.data(), dOffsets,
-                                 s.discreteTotal, s.continuous.data(), cOffsets, s.continuousTotal, s.dt, actions.data(),
-                                 results.data());
-    VERVE_FUZZ_CHECK((r == VERVE_OK) == (verve_last_error()[0] == '\0'));
-    if (r != VERVE_OK) {
+    o.result = s.demonstrates
+                   ? verve_batch_update_demonstrated(batch, crowd.data(), n, s.rewards.data(), s.discrete.data(), dOffsets,
+                                                     s.discreteTotal, s.continuous.data(), cOffsets, s.continuousTotal, s.dt,
+                                                     s.demonstrated.data(), o.actions.data(), o.verdicts.data())
+                   : verve_batch_update(batch, crowd.data(), n, s.rewards.data(), s.discrete.data(), dOffsets,
+                                        s.discreteTotal, s.continuous.data(), cOffsets, s.continuousTotal, s.dt,
+                                        o.actions.data(), o.verdicts.data());
+    VERVE_FUZZ_CHECK((o.result == VERVE_OK) == (verve_last_error()[0] == '\0'));
+    return o;
+}
+
+// The batch on world a; the same step on its twin b by a batch of one worker.
+void batchStep(const Step& s, World& a, World& b) {
+    const std::vector<uint64_t> before = a.steps();
+    const Outcome x = batchCall(batch(s.host), s, a);
+    const Outcome y = batchCall(twinBatch(), s, b);
+    VERVE_FUZZ_CHECK(x.result == y.result && x.verdicts == y.verdicts);
+    const size_t n = s.entries.size();
+    if (x.result != VERVE_OK) {
         VERVE_FUZZ_CHECK(a.steps() == before);
         // Every verdict written (none left from before the call), and no agent reads as fine
         // without some verdict saying why the call refused it (issue 32).
         bool named = false;
-        for (uint32_t i = 0; i < n; ++i) {
-            VERVE_FUZZ_CHECK(results[i] != VERVE_ERROR_INTERNAL);
-            named = named || results[i] != VERVE_OK;
+        for (size_t i = 0; i < n; ++i) {
+            VERVE_FUZZ_CHECK(x.verdicts[i] != VERVE_ERROR_INTERNAL);
+            named = named || x.verdicts[i] != VERVE_OK;
         }
         VERVE_FUZZ_CHECK(n == 0 || named);
         return;
     }
-    // Each agent read its own number of values (a packed observation of another count shifts the
-    // ones after it: the batch cannot see that), at its offset or after the agent before it.
-    uint32_t atDiscrete = 0, atContinuous = 0;
-    for (uint32_t i = 0; i < n; ++i) {
-        VERVE_FUZZ_CHECK(results[i] == VERVE_OK);
-        if (!s.discreteOffsets.empty()) atDiscrete = s.discreteOffsets[i];
-        if (!s.continuousOffsets.empty()) atContinuous = s.continuousOffsets[i];
-        uint32_t action = UINT32_MAX;
-        // An agent that reads no values may have any offset: no pointer is formed from it.
-        const int32_t* discrete = s.numDiscrete[i] == 0 ? nullptr : s.discrete.data() + atDiscrete;
-        const float* continuous = s.numContinuous[i] == 0 ? nullptr : s.continuous.data() + atContinuous;
-        if (s.demonstrates && s.demonstrated[i] != VERVE_AGENT_CHOOSES) {
-            action = s.demonstrated[i];
-            VERVE_FUZZ_CHECK(verve_agent_update_demonstrated(b.members[s.entries[i]], s.rewards[i], discrete, s.numDiscrete[i],
-                                                             continuous, s.numContinuous[i], s.dt, nullptr, 0, action) == VERVE_OK);
-        } else {
-            VERVE_FUZZ_CHECK(verve_agent_update(b.members[s.entries[i]], s.rewards[i], discrete, s.numDiscrete[i], continuous,
-                                                s.numContinuous[i], s.dt, &action) == VERVE_OK);
-        }
-        VERVE_FUZZ_CHECK(action == actions[i]);
-        atDiscrete += s.numDiscrete[i];
-        atContinuous += s.numContinuous[i];
+    for (size_t i = 0; i < n; ++i) {
+        VERVE_FUZZ_CHECK(x.verdicts[i] == VERVE_OK);
+        if (s.demonstrates && s.demonstrated[i] != VERVE_AGENT_CHOOSES) VERVE_FUZZ_CHECK(x.actions[i] == s.demonstrated[i]);
     }
+    VERVE_FUZZ_CHECK(x.actions == y.actions);
 }
-
 
 // A member in both worlds: a body of brain k, or (past the brains) an agent of descriptor k.
 void addMember(World& a, World& b, const std::vector<verve_agent_desc>& own, size_t k) {
@@ -324,7 +333,7 @@ extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size) {
             }
         }
     }
-    // The batch's world and the single updates' world end the same, member by member.
+    // The two batches' worlds end the same, member by member.
     for (size_t m = 0; m < a.members.size() && saveBytes < verve_fuzz::kSaveBytesPerInput; ++m) {
         const std::vector<char> x = verve_fuzz::savedBytes(static_cast<const verve_agent*>(a.members[m]), verve_agent_save_memory);
         saveBytes += 4 * x.size();

@@ -259,8 +259,10 @@ void VERVE_CALL finishOnThreads(void* userTask, void*) {
 
 constexpr uint32_t kCrowd = 8;  // 4 agents of their own, then 4 bodies of one brain
 
-// Creates the crowd and a 4-worker batch, then 6 batch updates: the first starts the batch's own
-// pool (its threads), every one grows RBFs and plans.
+// Creates the crowd and a 4-worker batch, then 9 batch updates: the first starts the batch's own
+// pool (its threads); the agents grow RBFs and plan in every one; the brain does not plan, and its
+// bodies see two observations in turn, so that after the first two updates they run in the batch's
+// phases (docs/crowds.md), but for the steps where some are shown what to do.
 class BatchScenario {
 public:
     explicit BatchScenario(bool hostJobs) : hostJobs_(hostJobs) {}
@@ -269,7 +271,7 @@ public:
         for (verve_agent* a : agents_) verve_agent_destroy(a);
         verve_brain_destroy(brain_);
     }
-    int calls() const { return 4 + 1 + 4 + 1 + 6; }
+    int calls() const { return 4 + 1 + 4 + 1 + 9; }
     static bool isBatchUpdate(int i) { return i >= 10; }
 
     verve_result call(int i) {
@@ -279,7 +281,7 @@ public:
             const verve_agent_desc d = mixedDesc(true, 20 + static_cast<uint64_t>(i));
             r = verve_agent_create(&d, &made);
         } else if (i == 4) {
-            const verve_agent_desc d = mixedDesc(true, 30);
+            const verve_agent_desc d = mixedDesc(false, 30);
             return verve_brain_create(&d, &brain_);
         } else if (i < 9) {
             r = verve_brain_create_body(brain_, &made);
@@ -298,9 +300,9 @@ public:
             int32_t discrete[kCrowd];
             float continuous[2 * kCrowd];
             for (uint32_t a = 0; a < kCrowd; ++a) {
-                const float t = static_cast<float>(k * 11 + static_cast<int>(a));
+                const float t = static_cast<float>((a < 4 ? k : k % 2) * 11 + static_cast<int>(a));
                 rewards[a] = (k + static_cast<int>(a)) % 4 == 0 ? 1.0f : -0.1f;
-                discrete[a] = static_cast<int32_t>((k + a) % 3);
+                discrete[a] = static_cast<int32_t>(((a < 4 ? k : k % 2) + a) % 3);
                 continuous[2 * a] = std::sin(0.9f * t);
                 continuous[2 * a + 1] = std::cos(0.4f * t);
             }

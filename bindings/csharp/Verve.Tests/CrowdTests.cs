@@ -4,7 +4,8 @@ using Xunit;
 
 namespace Verve.Tests
 {
-    // Many agents through the real runtime: a batch equals updates in order on any thread count,
+    // Many agents through the real runtime: a batch gives separate agents the updates in order and
+    // every agent the same steps on any thread count (a brain's bodies act in phases, docs/crowds.md),
     // bodies of one brain share what they learn, a brain saves (XML and binary) and loads as a brain or
     // an agent, bad input refuses the whole batch.
     public class CrowdTests
@@ -38,13 +39,17 @@ namespace Verve.Tests
         [InlineData(1)]
         [InlineData(2)]
         [InlineData(3)]
-        public void BatchEqualsUpdatesInOrder(int workers)
+        public void BatchGivesSeparateAgentsUpdatesInOrderAndAllAgentsTheSameOnAnyThreadCount(int workers)
         {
             var (solo, soloBrain) = Crowd();
             var (crowd, crowdBrain) = Crowd();
+            var (twin, twinBrain) = Crowd();
+            int[] separate = { 0, 2 };  // the others are bodies of one brain
             using var batch = new Batch(workers);
+            using var one = new Batch(1);
             Assert.Equal(workers, batch.WorkerCount);
             var actions = new int[crowd.Length];
+            var twinActions = new int[twin.Length];
             var results = new ResultCode[crowd.Length];
             for (int step = 0; step < 80; step++)
             {
@@ -59,13 +64,17 @@ namespace Verve.Tests
                     c += 2;
                 }
                 batch.Update(crowd, rewards, discrete, continuous, TestAgents.Dt, actions, results);
-                Assert.Equal(expected, actions);
+                one.Update(twin, rewards, discrete, continuous, TestAgents.Dt, twinActions);
+                foreach (int i in separate) Assert.Equal(expected[i], actions[i]);
+                Assert.Equal(twinActions, actions);
                 Assert.All(results, r => Assert.Equal(ResultCode.Ok, r));
             }
-            for (int i = 0; i < solo.Length; i++) Assert.Equal(solo[i].SaveToBytes(), crowd[i].SaveToBytes());
-            foreach (var a in solo.Concat(crowd)) a.Dispose();
+            foreach (int i in separate) Assert.Equal(solo[i].SaveToBytes(), crowd[i].SaveToBytes());
+            for (int i = 0; i < twin.Length; i++) Assert.Equal(twin[i].SaveToBytes(), crowd[i].SaveToBytes());
+            foreach (var a in solo.Concat(crowd).Concat(twin)) a.Dispose();
             soloBrain.Dispose();
             crowdBrain.Dispose();
+            twinBrain.Dispose();
         }
 
         [Fact]

@@ -1,7 +1,8 @@
 # Crowds inside the real engine: VerveBrain (one learner, many VerveAgent bodies) and VerveBatch
-# (many agents stepped in one call on libverve's threads). A batch must act exactly as one update
-# per agent in array order, so every check drives a twin crowd, made from the same options, with
-# single updates and compares. Every refused call must return null / false, give its error in
+# (many agents stepped in one call on libverve's threads). A batch must act on separate agents
+# exactly as one update per agent in array order, and on every agent alike for any number of
+# threads (a brain's bodies act in phases, docs/crowds.md), so every check drives a twin crowd,
+# made from the same options, with single updates or a batch of another worker count, and compares. Every refused call must return null / false, give its error in
 # get_last_error() and change nothing (the twin still agrees afterwards).
 #   godot3-server --path build/godot/tests --script res://test_crowd.gd   (exit code 1 on a failure)
 extends "res://checks.gd"
@@ -202,21 +203,30 @@ func test_brain_persistence():
 	check(kept.has_brain() and kept.get_rbf_count() == rbfs, "failed loads keep the brain")
 
 
-# Two identical crowds, one stepped by a 2-worker batch, the other by single updates: the same
-# actions at every step and the same state at the end.
+# Three identical crowds, stepped by a 2-worker batch, a 1-worker batch and single updates: the
+# two batches take the same actions at every step and leave the same state; the separate agents
+# (not bodies of a brain) act as their single updates do.
 func test_batch_equals_single_updates():
 	var batch = VerveBatch.new()
 	check(batch.create(2) and batch.get_worker_count() == 2, "a batch of 2 workers: " + batch.get_last_error())
+	var one = VerveBatch.new()
+	check(one.create(1), "a batch of 1 worker: " + one.get_last_error())
 	var batched = new_crowd()
 	var single = new_crowd()
+	var twin = new_crowd()
 	var differ = 0
+	var separate_differ = 0
 	for t in 300:
 		var a = step_batch(batch, batched, t)
 		var b = step_single(single, t)
-		if a != b:
+		if a != step_batch(one, twin, t):
 			differ += 1
-	check(differ == 0, "the batch's actions are single updates' (%d of 300 steps differ)" % differ)
-	check_same(batched, single, "after 300 steps")
+		for i in [1, 3, 7]:  # the separate agents of new_crowd()
+			if a[i] != b[i]:
+				separate_differ += 1
+	check(differ == 0, "a batch's actions are the same on 1 and 2 workers (%d of 300 steps differ)" % differ)
+	check(separate_differ == 0, "separate agents act as single updates (%d actions differ)" % separate_differ)
+	check_same(batched, twin, "after 300 steps")
 	check(batched["brains"][0].get_rbf_count() > 0, "the batch trained the brains")
 	var seen = {}
 	for action in batched["last"]:
@@ -224,10 +234,10 @@ func test_batch_equals_single_updates():
 	check(seen.size() > 1, "the crowd does not act as one")
 	# One agent listed twice: two updates in a row, as two single calls.
 	var twice = new_agent(WALKER)
-	var twin = new_agent(WALKER)
+	var solo = new_agent(WALKER)
 	var actions = batch.update([twice, twice], PoolRealArray([0.5, 0.0]), null, PoolRealArray([0.1, 0.2, 0.3, 0.4]), DT)
-	var expected = PoolIntArray([twin.update(0.5, [], [0.1, 0.2], DT), twin.update(0.0, [], [0.3, 0.4], DT)])
-	check(actions == expected and twice.get_stats().hash() == twin.get_stats().hash(), "an agent listed twice steps twice")
+	var expected = PoolIntArray([solo.update(0.5, [], [0.1, 0.2], DT), solo.update(0.0, [], [0.3, 0.4], DT)])
+	check(actions == expected and twice.get_stats().hash() == solo.get_stats().hash(), "an agent listed twice steps twice")
 	var empty = batch.update([], PoolRealArray(), null, null, DT)
 	check(typeof(empty) == TYPE_INT_ARRAY and empty.size() == 0, "no agents: no actions")
 	var auto = VerveBatch.new()
@@ -235,7 +245,8 @@ func test_batch_equals_single_updates():
 
 
 # A batch where some members are shown what to do: the actions and learning of update_demonstrated
-# for them and update for the rest, in array order.
+# for them and update for the rest, in array order (a brain with a body shown what to do steps its
+# bodies in order; here both brains have one).
 func test_batch_demonstrated():
 	var batch = VerveBatch.new()
 	check(batch.create(2), "a batch: " + batch.get_last_error())
@@ -245,7 +256,7 @@ func test_batch_demonstrated():
 	for t in 60:
 		var shown = PoolIntArray()
 		for i in batched["agents"].size():
-			shown.append(t % 2 if i % 3 == 1 else -1)
+			shown.append(t % 2 if i % 2 == 0 else -1)
 		var p = packed(batched, t)
 		var actions = batch.update(batched["agents"], p[0], p[1], p[2], DT, shown)
 		check(typeof(actions) == TYPE_INT_ARRAY, "a demonstrated batch returns actions: " + batch.get_last_error())
@@ -274,7 +285,7 @@ func test_batch_demonstrated():
 
 
 # Every refused batch call: null, the error in get_last_error(), and no agent changed (the twin
-# crowd, stepped alike before and after, still agrees).
+# crowd, stepped alike by a 1-worker batch before and after, still agrees).
 func test_batch_errors():
 	var batch = VerveBatch.new()
 	check_error(batch, batch.update([], PoolRealArray(), null, null, DT), null, "has no batch", "update before create()")
@@ -284,11 +295,13 @@ func test_batch_errors():
 	check_error(batch, batch.create(5000), false, "above 1024", "5000 workers (the library says)")
 	check(not batch.has_batch(), "failed creates make no batch")
 	check(batch.create(2), "create(2)")
+	var one = VerveBatch.new()
+	check(one.create(1), "a batch of 1 worker: " + one.get_last_error())
 	var crowd = new_crowd()
 	var twin = new_crowd()
 	for t in 40:
 		step_batch(batch, crowd, t)
-		step_single(twin, t)
+		step_batch(one, twin, t)
 	var agents = crowd["agents"]
 	var n = agents.size()
 	check_same(crowd, twin, "before the errors")
@@ -363,7 +376,7 @@ func test_batch_errors():
 	# Nothing changed: both crowds take the same steps again and still agree.
 	var differ = 0
 	for t in range(41, 101):  # from the very step the refused calls tried
-		if step_batch(batch, crowd, t) != step_single(twin, t):
+		if step_batch(batch, crowd, t) != step_batch(one, twin, t):
 			differ += 1
 	check(differ == 0, "after the refused calls the crowds still act alike (%d of 60 steps differ)" % differ)
 	check_same(crowd, twin, "after the errors")
