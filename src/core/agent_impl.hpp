@@ -59,13 +59,17 @@ struct Agent::Impl {
     float learnedReward(float reward, bool final = false);
     float clampedReward(float reward);  // the same without adding it to the brain's range
     // A batch's bodies of one brain, on several threads at once (shared_step.cpp): prepareShared
-    // makes the step against the brain as it is (no write to it; false: the step would grow or
-    // plan, and is made whole later), commitShared adds what it saw to the brain's measures (in
-    // body order), TdLearner::trainPart trains the weights part by part, finishShared marks the
-    // new traces.
-    bool prepareShared(float reward, ObservationView obs, float dt, core::LookupScratch& scratch, std::uint32_t parts);
-    void commitShared();
-    void finishShared();
+    // makes the step against the brain as it is, keeping its weight changes (no write to the
+    // brain; false: the step would grow or plan, and is made whole later) and what the brain's
+    // measures are to see in `seen`; commitShared adds that to the brain (in body order), then
+    // td.trainPart trains the weights.
+    struct SharedStep {
+        bool seesReward = false, seesDelta = false;
+        float reward = 0.0f, delta = 0.0f;
+    };
+    bool prepareShared(float reward, ObservationView obs, float dt, core::LookupScratch& scratch, std::uint32_t parts,
+                       SharedStep& seen);
+    static void commitShared(BrainState& brain, const SharedStep& seen);
     // An update that needed an RBF the budget did not allow: counted and reported (once).
     void noteBudgetReached();
     // probabilities: chooseAction's activations, divided by their sum (uniform over the allowed
@@ -99,11 +103,6 @@ struct Agent::Impl {
     ActionSelection selection = ActionSelection::Sample;
     core::PrefetchQueue* ahead = nullptr;  // a batch's next agent, during one update (batch.cpp)
     std::uint64_t batchCall = 0;  // the latest batch call that met this body (batch.cpp)
-    // What a prepared shared step leaves for commitShared and finishShared.
-    struct SharedStep {
-        bool marks = false, seesReward = false, seesDelta = false;
-        float reward = 0.0f, delta = 0.0f;
-    } sharedStep;
     // Of the latest update's choice; chooseAction's scratch before that (capacity 1 + numActions),
     // so that an update writes one small block where it wrote two.
     std::vector<float> probabilities;

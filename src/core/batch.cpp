@@ -93,13 +93,16 @@ enum class Mode : std::uint8_t {
 };
 
 // The phases of a call, each a parallel run over its items.
-enum class Phase : std::uint8_t { Groups, Prepare, Train, Finish, Later };
+enum class Phase : std::uint8_t { Groups, Prepare, Train, Later };
 
 struct Batch::Impl {
     explicit Impl(const BatchOptions& o) : options(o) {}
 
     void updateGroups(std::uint32_t begin, std::uint32_t end) noexcept;
     void updateOne(std::uint32_t i) noexcept;  // a whole step, its failure recorded
+    // Asks for the memory of the agents list[k + 1...] (of list[..last)) that the updates after
+    // agent list[k] read.
+    void prefetchAhead(const std::uint32_t* list, std::uint32_t k, std::uint32_t last) const noexcept;
     // Which groups run in phases: those of two or more bodies of a brain that does not plan, none
     // of them listed twice or shown an action.
     void choosePhasedGroups(const BatchStep& s);
@@ -120,10 +123,16 @@ struct Batch::Impl {
     FirstFailure failure;
 
     // Groups in phases: their agents in `phased` (phasedStart per group, plus an end), each
-    // agent's mode, a lookup scratch per worker, and the parts the features are trained in.
+    // agent's mode, a lookup scratch per worker, and the parts the features are trained in. The
+    // training reads only what the bodies kept: their learners (per entry of `phased`, null when
+    // not prepared) and each group's weights.
     std::vector<Mode> mode;                  // per agent
     std::vector<std::uint32_t> phased;
     std::vector<std::uint32_t> phasedStart;
+    std::vector<const core::TdLearner*> staged;
+    std::vector<Agent::Impl::SharedStep> seen;  // per entry of `phased`: what the brain's measures see
+    std::vector<core::WeightTable*> groupWeights;
+    std::vector<BrainState*> groupBrain;
     std::vector<core::LookupScratch> scratch;
     std::uint32_t parts = 1;
     Phase phase = Phase::Groups;
@@ -149,7 +158,6 @@ void Batch::Impl::updateGroups(std::uint32_t begin, std::uint32_t end) noexcept 
     const BatchStep& s = *step;
     // The groups' agents lie together in `order`, each group in its update order.
     const std::uint32_t first = groupStart[begin], last = groupStart[end];
-    constexpr unsigned kStages = Agent::Impl::kPrefetchStages;
     // Each update asks for the next agent's arrays from inside its loops (Agent::Impl::ahead), when
     // the crowd's arrays together outgrow the caches, as the first agent's size times the crowd's
     // tells: from the caches (a 100-agent cart-pole crowd, 3 MB) the asking only costs, out of them
@@ -161,13 +169,7 @@ void Batch::Impl::updateGroups(std::uint32_t begin, std::uint32_t end) noexcept 
     for (std::uint32_t k = first; k < last; ++k) {
         const std::uint32_t i = order[k];
         if (mode[i] != Mode::InGroup) continue;  // a body of a group in phases: after this run
-        // Stage st for the agent kStages - st places ahead: each link of an agent's chain of
-        // pointers is asked for a whole update before the stage that reads it, and all of them
-        // before the agent's own update. The Agent, which leads to the rest, one update earlier.
-        if (k + kStages + 1 < last) core::prefetchLine(s.agents[order[k + kStages + 1]]);
-        for (unsigned st = 0; st < kStages; ++st) {
-            if (k + kStages - st < last) s.agents[order[k + kStages - st]]->impl_->prefetch(st);
-        }
+        prefetchAhead(order.data(), k, last);
         Agent::Impl& agent = *s.agents[i]->impl_;
         if (queues && k + 1 < last) {
             const Agent::Impl& next = *s.agents[order[k + 1]]->impl_;
@@ -177,6 +179,18 @@ void Batch::Impl::updateGroups(std::uint32_t begin, std::uint32_t end) noexcept 
         }
         updateOne(i);
         agent.ahead = nullptr;
+    }
+}
+
+void Batch::Impl::prefetchAhead(const std::uint32_t* list, std::uint32_t k, std::uint32_t last) const noexcept {
+    const BatchStep& s = *step;
+    constexpr unsigned kStages = Agent::Impl::kPrefetchStages;
+    // Stage st for the agent kStages - st places ahead: each link of an agent's chain of pointers
+    // is asked for a whole update before the stage that reads it, and all of them before the
+    // agent's own update. The Agent, which leads to the rest, one update earlier.
+    if (k + kStages + 1 < last) core::prefetchLine(s.agents[list[k + kStages + 1]]);
+    for (unsigned st = 0; st < kStages; ++st) {
+        if (k + kStages - st < last) s.agents[list[k + kStages - st]]->impl_->prefetch(st);
     }
 }
 
@@ -218,6 +232,8 @@ void Batch::Impl::choosePhasedGroups(const BatchStep& s) {
     const auto groups = static_cast<std::uint32_t>(groupStart.size() - 1);
     phased.clear();
     phasedStart.clear();
+    groupWeights.clear();
+    groupBrain.clear();
     for (std::uint32_t g = 0; g < groups; ++g) {
         const std::uint32_t first = groupStart[g], last = groupStart[g + 1];
         const Agent::Impl& lead = *s.agents[order[first]]->impl_;
@@ -232,12 +248,16 @@ void Batch::Impl::choosePhasedGroups(const BatchStep& s) {
         }
         if (inOrder) continue;
         phasedStart.push_back(static_cast<std::uint32_t>(phased.size()));
+        groupWeights.push_back(&s.agents[order[first]]->impl_->weights);
+        groupBrain.push_back(s.agents[order[first]]->impl_->brain.get());
         for (std::uint32_t k = first; k < last; ++k) {
             mode[order[k]] = Mode::Prepared;
             phased.push_back(order[k]);
         }
     }
     phasedStart.push_back(static_cast<std::uint32_t>(phased.size()));
+    staged.assign(phased.size(), nullptr);
+    seen.resize(phased.size());
 }
 
 void Batch::Impl::runPhaseItems(Phase p, std::uint32_t begin, std::uint32_t end, std::uint32_t worker) noexcept {
@@ -249,13 +269,14 @@ void Batch::Impl::runPhaseItems(Phase p, std::uint32_t begin, std::uint32_t end,
         case Phase::Prepare: {
             core::LookupScratch& mine = scratch[worker % scratch.size()];
             for (std::uint32_t k = begin; k < end; ++k) {
-                if (k + 2 < end) core::prefetchLine(s.agents[phased[k + 2]]->impl_.get());
+                prefetchAhead(phased.data(), k, end);
                 const std::uint32_t i = phased[k];
                 if (mode[i] != Mode::Prepared) continue;
                 Agent::Impl& body = *s.agents[i]->impl_;
                 try {
-                    if (body.prepareShared(s.rewards[i], views[i], s.dt, mine, parts)) {
+                    if (body.prepareShared(s.rewards[i], views[i], s.dt, mine, parts, seen[k])) {
                         s.actions[i] = body.previousAction;
+                        staged[k] = &body.td;
                     } else {
                         mode[i] = Mode::Later;
                     }
@@ -268,20 +289,16 @@ void Batch::Impl::runPhaseItems(Phase p, std::uint32_t begin, std::uint32_t end,
         }
         case Phase::Train:
             // Item = (group, part): the part's weights take every prepared body's change, in order.
+            // Only what the bodies kept is read, a few bodies ahead of its use.
             for (std::uint32_t t = begin; t < end; ++t) {
                 const std::uint32_t g = t / parts, part = t % parts;
-                for (std::uint32_t k = phasedStart[g]; k < phasedStart[g + 1]; ++k) {
-                    const std::uint32_t i = phased[k];
-                    if (mode[i] != Mode::Prepared) continue;
-                    Agent::Impl& body = *s.agents[i]->impl_;
-                    body.td.trainPart(body.weights, part);
+                core::WeightTable& weights = *groupWeights[g];
+                const std::uint32_t first = phasedStart[g], last = phasedStart[g + 1];
+                for (std::uint32_t k = first; k < last; ++k) {
+                    if (k + 8 < last && staged[k + 8] != nullptr) staged[k + 8]->prefetchStaged(0);
+                    if (k + 4 < last && staged[k + 4] != nullptr) staged[k + 4]->prefetchStaged(1);
+                    if (staged[k] != nullptr) staged[k]->trainPart(weights, part);
                 }
-            }
-            return;
-        case Phase::Finish:
-            for (std::uint32_t k = begin; k < end; ++k) {
-                const std::uint32_t i = phased[k];
-                if (mode[i] == Mode::Prepared) s.agents[i]->impl_->finishShared();
             }
             return;
         case Phase::Later:
@@ -357,6 +374,10 @@ void Batch::update(const BatchStep& s) {
         b.mode.assign(s.count, Mode::InGroup);
         b.phased.reserve(s.count);
         b.phasedStart.reserve(s.count + 1);
+        b.staged.reserve(s.count);
+        b.seen.reserve(s.count);
+        b.groupBrain.reserve(s.count);
+        b.groupWeights.reserve(s.count);
         b.parts = std::min<std::uint32_t>(64, std::max(1u, b.options.workerCount));
         b.scratch.resize(std::max(1u, b.options.workerCount));
         if (b.options.scheduler.enqueueTask == nullptr && !b.pool) {
@@ -434,11 +455,12 @@ void Batch::update(const BatchStep& s) {
         const auto bodies = static_cast<std::uint32_t>(b.phased.size());
         const auto phasedGroups = static_cast<std::uint32_t>(b.phasedStart.size() - 1);
         b.runPhase(Phase::Prepare, bodies, 32);
-        for (std::uint32_t i : b.phased) {
-            if (b.mode[i] == Mode::Prepared) s.agents[i]->impl_->commitShared();
+        for (std::uint32_t g = 0; g + 1 < b.phasedStart.size(); ++g) {
+            for (std::uint32_t k = b.phasedStart[g]; k < b.phasedStart[g + 1]; ++k) {
+                if (b.staged[k] != nullptr) Agent::Impl::commitShared(*b.groupBrain[g], b.seen[k]);
+            }
         }
         b.runPhase(Phase::Train, phasedGroups * b.parts, 1);
-        b.runPhase(Phase::Finish, bodies, 64);
         b.runPhase(Phase::Later, phasedGroups, 1);
     }
     b.step = nullptr;

@@ -1,11 +1,11 @@
 // A batch's bodies of one brain, updated on several threads at once (docs/crowds.md, "Bodies in
-// parallel"). Agent::Impl::step split in three: prepareShared acts and computes the TD error of a
-// body against the brain as the batch found it, and writes nothing to the brain; commitShared
-// adds the rewards and TD errors it saw to the brain's measures, in body order; between the two
-// and finishShared, TdLearner::trainPart applies each body's weight changes, part by part of the
-// features, each weight taking the bodies' changes in body order. The result depends on the bodies'
-// order only, never on the number of threads. A step that would change the brain in any other way
-// (a new RBF, the model and its plans) is not prepared: the batch makes it whole afterwards.
+// parallel"). Agent::Impl::step split in three: prepareShared makes a body's step against the brain
+// as the batch found it (its lookup, TD error, action and traces), keeping its weight changes
+// (TdLearner::stage) instead of writing them; commitShared adds the rewards and TD errors it saw to
+// the brain's measures, in body order; then TdLearner::trainPart applies the kept changes, part by
+// part of the features, each weight taking the bodies' changes in body order. The result depends on
+// the bodies' order only, never on the number of threads. A step that would change the brain in any
+// other way (a new RBF, the model and its plans) is not prepared: the batch makes it whole afterwards.
 #include <limits>
 #include <utility>
 
@@ -15,7 +15,7 @@
 namespace verve {
 
 bool Agent::Impl::prepareShared(float reward, ObservationView obs, float dt, core::LookupScratch& scratch,
-                                std::uint32_t parts) {
+                                std::uint32_t parts, SharedStep& seen) {
     Impl& s = *this;
     if (s.desc.planning) return false;  // the model and the plans train the brain as they go
     // The batch has checked the observation, the reward and dt. Everything that may allocate comes
@@ -28,24 +28,26 @@ bool Agent::Impl::prepareShared(float reward, ObservationView obs, float dt, cor
     s.reserveBody(s.rep.featureCount(), s.current.size());
     s.td.reserveStaged(parts);
     // Nothing below allocates.
-    s.sharedStep = SharedStep{};
+    s.td.unstage();
+    seen = SharedStep{};
     const float r = s.clampedReward(reward);
-    s.sharedStep.seesReward = s.learning && s.hasPrevious;
-    s.sharedStep.reward = r;
+    seen.seesReward = s.learning && s.hasPrevious;
+    seen.reward = r;
     s.lastDt = dt;
     if (s.learning) s.trialSeconds += dt;
 
     // The brain's reward range as a single update would see it: with this reward in it.
     core::RewardRange rewards = s.brain->rewards;
-    if (s.sharedStep.seesReward) rewards.see(r);
+    if (seen.seesReward) rewards.see(r);
     const StepConstants k = s.constantsFor(dt, rewards);
-    if (s.learning && s.hasPrevious && s.learnsFromRealSteps()) {
+    const bool learns = s.learning && s.hasPrevious && s.learnsFromRealSteps();
+    if (learns) {
         const float before = s.td.value(s.weights, s.previous, s.ahead);
         const float next = core::bounded(s.td.value(s.weights, s.current, s.ahead), k.values);
         const float delta = r + k.gamma * next - core::bounded(before, k.values);
-        s.td.stage(delta, k.rates, k.traceDecay, parts);
-        s.sharedStep.seesDelta = k.traceDecay > 0.0f;  // as learnReal
-        s.sharedStep.delta = delta;
+        s.td.stage(delta, k.rates, parts);
+        seen.seesDelta = k.traceDecay > 0.0f;  // as learnReal
+        seen.delta = delta;
         s.stats.tdError = delta;
     }
     const bool samples = s.selection == ActionSelection::Sample;
@@ -56,7 +58,9 @@ bool Agent::Impl::prepareShared(float reward, ObservationView obs, float dt, cor
                                                          !samples, hopeless);
     s.stats.value = core::bounded(s.latestValue, k.values);
     s.recordProbabilities(nullptr, s.latestValue <= hopeless);
-    s.sharedStep.marks = s.learning && s.learnsFromRealSteps();  // finishShared, once the traces have decayed
+    // The traces are the body's own: they decay and take the new step's at once.
+    if (learns) s.td.decayStaged(k.traceDecay);
+    if (s.learning && s.learnsFromRealSteps()) s.td.mark(s.current, action, s.rep.featureCount());
     if (s.teacher.armed()) s.teacher.remember(dt, action, s.current);
 
     std::swap(s.previous, s.current);
@@ -66,19 +70,13 @@ bool Agent::Impl::prepareShared(float reward, ObservationView obs, float dt, cor
     s.hasPrevious = true;
     ++s.stats.steps;
     s.stats.rbfCount = s.rep.featureCount();
+    s.stats.liveTraces = s.td.liveCount();
     return true;
 }
 
-void Agent::Impl::commitShared() {
-    if (sharedStep.seesReward) brain->rewards.see(sharedStep.reward);
-    if (sharedStep.seesDelta) brain->tdScale.see(sharedStep.delta);
-}
-
-void Agent::Impl::finishShared() {
-    td.finishStaged();
-    if (sharedStep.marks) td.mark(previous, previousAction, rep.featureCount());
-    stats.liveTraces = td.liveCount();
-    sharedStep = SharedStep{};
+void Agent::Impl::commitShared(BrainState& brain, const SharedStep& seen) {
+    if (seen.seesReward) brain.rewards.see(seen.reward);
+    if (seen.seesDelta) brain.tdScale.see(seen.delta);
 }
 
 }  // namespace verve

@@ -114,21 +114,25 @@ public:
     // falls below the threshold are dropped. One pass: both follow the live list.
     void trainAndDecay(WeightTable& w, float delta, TdRates rates, float decay, PrefetchQueue* ahead = nullptr);
     // Staged training (td_staged.cpp), for a batch that updates the bodies of one brain on several
-    // threads (core/shared_step.hpp). stage() keeps what trainAndDecay would do, with the live
-    // features sorted into `parts` parts (reserveStaged(parts) first); trainPart(w, p) does it for
-    // part p's features only, so the parts of many bodies can train one brain's weights at once on
-    // different threads: each weight still takes each body's step in body order. finishStaged()
-    // then drops the traces that fell below the threshold, keeping the live list's order.
+    // threads (core/shared_step.cpp). stage() keeps what trainAndDecay would add to the weights (the
+    // step and a copy of every live trace, sorted into `parts` parts of the features; reserveStaged
+    // first) and touches nothing else; decayStaged() then decays the traces as trainAndDecay would,
+    // so the body can mark its new ones at once. trainPart(w, p) adds the kept changes to part p's
+    // features only, so the parts of many bodies can train one brain's weights at once on different
+    // threads, each weight taking the bodies' changes in body order.
     void reserveStaged(std::uint32_t parts);
-    void stage(float delta, TdRates rates, float decay, std::uint32_t parts);
-    bool staged() const { return staged_; }
-    void trainPart(WeightTable& w, std::uint32_t part);
-    // chooseAction as it would be once this body's staged step is applied (the features' rows of
-    // `w` as trainPart would leave them): a single update acts after its own learning step.
+    void stage(float delta, TdRates rates, std::uint32_t parts);
+    void unstage() { staged_ = false; }
+    void decayStaged(float decay);
+    void trainPart(WeightTable& w, std::uint32_t part) const;
+    // chooseAction as it would be once the staged change is applied (before decayStaged): a single
+    // update acts after its own learning step.
     std::uint32_t chooseActionStaged(const WeightTable& w, const std::vector<ActiveFeature>& phi, Rng& rng,
                                      std::vector<float>& activations, float& value, bool greedy,
                                      float uniformAtOrBelow) const;
-    void finishStaged();
+    // A batch's prefetch of what trainPart reads: stage 0 the members that lead to it, stage 1 the
+    // part boundaries, features, rows and step.
+    void prefetchStaged(unsigned stage) const noexcept;
     static std::uint32_t partOf(std::uint32_t feature, std::uint32_t parts) {
         return (feature >> 4) % parts;  // 16 rows together: threads seldom share a cache line
     }
@@ -182,11 +186,12 @@ private:
     static constexpr std::uint32_t kStackStride = 16;
     std::vector<float> step_;
     std::vector<std::uint32_t> trained_; // rows a bounded update trained (scratch)
-    // Staged training: the live features by part (partStart_[p] .. partStart_[p + 1]), the step.
-    std::vector<std::uint32_t> stagedLive_;
+    // Staged training: the live features by part (partStart_[p] .. partStart_[p + 1]), their
+    // traces as they were (stride_ values each, in the same order), the step.
     std::vector<std::uint32_t> partStart_;
+    std::vector<std::uint32_t> stagedLive_;
+    std::vector<float> stagedRows_;
     std::vector<float> stagedStep_;
-    float stagedDecay_ = 0.0f;
     PolicyRange stagedRange_;
     bool stagedBounded_ = false;
     bool staged_ = false;

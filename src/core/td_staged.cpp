@@ -1,49 +1,70 @@
 // TdLearner's staged training: trainAndDecay split so that the bodies of one brain can train its
-// weights on several threads at once, each thread owning a part of the features (shared_step.hpp).
+// weights on several threads at once, each thread owning a part of the features (shared_step.cpp).
 #include <algorithm>
 
+#include "core/prefetch.hpp"
 #include "core/td_learner.hpp"
 
 namespace verve::core {
 
 void TdLearner::reserveStaged(std::uint32_t parts) {
-    reserveRoom(stagedLive_, live_.capacity());
-    reserveRoom(trained_, live_.capacity());
+    // For the traces live now (stage() comes before the step marks new ones): a crowd's bodies keep
+    // a copy of what their traces are, not of what they could be.
     reserveRoom(partStart_, std::size_t(parts) + 1);
+    reserveRoom(stagedLive_, liveCount_);
+    reserveRoom(stagedRows_, std::size_t(liveCount_) * stride_);
     reserveRoom(stagedStep_, stride_);
 }
 
-void TdLearner::stage(float delta, TdRates rates, float decay, std::uint32_t parts) {
+void TdLearner::stage(float delta, TdRates rates, std::uint32_t parts) {
     // Room was reserved (reserveStaged, reserve): nothing here allocates.
     stagedStep_.resize(stride_);
     stagedBounded_ = stepFor(delta, rates, stagedStep_.data());
     stagedRange_ = rates.policyRange;
-    stagedDecay_ = decay;
-    // A counting sort of the live features by part, each part in live-list order.
+    // A counting sort of the live features and their traces by part, each part in live-list order.
     partStart_.assign(std::size_t(parts) + 1, 0);
     for (std::uint32_t i = 0; i < liveCount_; ++i) ++partStart_[partOf(live_[i], parts) + 1];
     for (std::uint32_t p = 0; p < parts; ++p) partStart_[p + 1] += partStart_[p];
     stagedLive_.resize(liveCount_);
-    for (std::uint32_t i = 0; i < liveCount_; ++i) stagedLive_[partStart_[partOf(live_[i], parts)]++] = live_[i];
+    stagedRows_.resize(std::size_t(liveCount_) * stride_);
+    for (std::uint32_t i = 0; i < liveCount_; ++i) {
+        const std::uint32_t at = partStart_[partOf(live_[i], parts)]++;
+        stagedLive_[at] = live_[i];
+        std::copy_n(traces_.data() + std::size_t(live_[i]) * stride_, stride_, stagedRows_.data() + std::size_t(at) * stride_);
+    }
     for (std::uint32_t p = parts; p > 0; --p) partStart_[p] = partStart_[p - 1];
     partStart_[0] = 0;
-    // The kernel compacts each part's entries as it drops traces; a bounded step clamps them all.
-    if (stagedBounded_) trained_.assign(stagedLive_.begin(), stagedLive_.end());
     staged_ = true;
 }
 
-void TdLearner::trainPart(WeightTable& w, std::uint32_t part) {
+void TdLearner::decayStaged(float decay) {
+    // As trainDecay's kernel: a trace whose value component falls below the threshold is dropped
+    // (zeroed), the live list compacted in order.
+    std::uint32_t kept = 0;
+    for (std::uint32_t i = 0; i < liveCount_; ++i) {
+        const std::uint32_t feature = live_[i];
+        float* e = traces_.data() + std::size_t(feature) * stride_;
+        const bool keep = e[0] * decay >= threshold_;
+        const float scale = keep ? decay : 0.0f;
+        for (std::uint32_t c = 0; c < stride_; ++c) e[c] *= scale;
+        live_[kept] = feature;
+        kept += keep;
+    }
+    liveCount_ = kept;
+}
+
+void TdLearner::trainPart(WeightTable& w, std::uint32_t part) const {
     if (!staged_ || part + 1 >= partStart_.size()) return;
-    const std::uint32_t begin = partStart_[part], count = partStart_[part + 1] - begin;
-    if (count == 0) return;
-    TraceStep s;
-    s.step = stagedStep_.data();
-    s.traceStride = stride_;
-    s.weightStride = w.stride();
-    s.decay = stagedDecay_;
-    s.threshold = threshold_;
-    kernels_->trainDecay(s, w.data().data(), traces_.data(), stagedLive_.data() + begin, count);
-    if (stagedBounded_) clampPolicy(w, trained_.data() + begin, count, stagedRange_);
+    const float* step = stagedStep_.data();
+    for (std::uint32_t i = partStart_[part]; i < partStart_[part + 1]; ++i) {
+        float* row = w.row(stagedLive_[i]);
+        const float* e = stagedRows_.data() + std::size_t(i) * stride_;
+        for (std::uint32_t c = 0; c < stride_; ++c) row[c] += step[c] * e[c];
+        if (!stagedBounded_) continue;
+        for (std::uint32_t a = 0; a < numActions_; ++a) {
+            row[WeightLayout::kPolicy + a] = stagedRange_.clamp(row[WeightLayout::kPolicy + a]);
+        }
+    }
 }
 
 std::uint32_t TdLearner::chooseActionStaged(const WeightTable& w, const std::vector<ActiveFeature>& phi, Rng& rng,
@@ -71,18 +92,15 @@ std::uint32_t TdLearner::chooseActionStaged(const WeightTable& w, const std::vec
     return chooseFromSums(rng, activations, value, nullptr, greedy, uniformAtOrBelow);
 }
 
-void TdLearner::finishStaged() {
-    if (!staged_) return;
-    // A dropped trace is zero (the kernel zeroes it) and a kept one is at least the threshold:
-    // the live list keeps its order, whatever the number of parts.
-    std::uint32_t kept = 0;
-    for (std::uint32_t i = 0; i < liveCount_; ++i) {
-        const std::uint32_t feature = live_[i];
-        live_[kept] = feature;
-        kept += traces_[std::size_t(feature) * stride_] != 0.0f;
+void TdLearner::prefetchStaged(unsigned stage) const noexcept {
+    if (stage == 0) {
+        prefetchBytes(&partStart_, reinterpret_cast<const char*>(&stagedBounded_ + 1) - reinterpret_cast<const char*>(&partStart_));
+        return;
     }
-    liveCount_ = kept;
-    staged_ = false;
+    prefetchData(partStart_);
+    prefetchData(stagedLive_);
+    prefetchData(stagedRows_);
+    prefetchData(stagedStep_);
 }
 
 }  // namespace verve::core

@@ -266,8 +266,8 @@ TEST(Batch, SameResultsOnAHostJobSystem) {
         const Outcome got = run(batched(batch));
         EXPECT_EQ(got.actions, expected.actions);
         EXPECT_EQ(got.saves, expected.saves);
-        // Separate agents in one task; bodies of brains in four more (docs/crowds.md).
-        EXPECT_EQ(host.tasks.load(), 5 * 120) << "five tasks per batch update";
+        // Separate agents in one task; bodies of brains in three more (docs/crowds.md).
+        EXPECT_EQ(host.tasks.load(), 4 * 120) << "four tasks per batch update";
         if (threaded) {
             EXPECT_GE(host.ranges.load(), 2 * 120) << "the host's threads shared the work";
         }
