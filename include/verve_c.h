@@ -17,7 +17,7 @@
  *    Overlapping calls on one agent are detected and refused with VERVE_ERROR_INVALID_STATE;
  *    a destroy during another call on the handle (agent, brain, batch) leaves it alive.
  *  - A shared brain and all its bodies count as one agent. verve_batch_update spreads many
- *    agents over threads for you, one brain's bodies in their order on one worker.
+ *    agents, and the bodies of a brain, over threads for you (docs/crowds.md).
  *  - verve_last_error() is per thread.
  *
  * Ownership
@@ -351,8 +351,9 @@ VERVE_API verve_result VERVE_CALL verve_batch_create(const verve_batch_desc* des
 VERVE_API void VERVE_CALL verve_batch_destroy(verve_batch* batch);
 /* A batch is used by one thread at a time, like an agent (an overlapping call is refused). */
 VERVE_API verve_result VERVE_CALL verve_batch_get_worker_count(const verve_batch* batch, uint32_t* out_count);
-/* One step of n agents (any shapes, separate agents or bodies), exactly as n verve_agent_update
- * calls in array order would do it, on any number of threads. Agent i reads rewards[i] and its
+/* One step of n agents (any shapes, separate agents or bodies), the same on any number of threads:
+ * separate agents exactly as n verve_agent_update calls in array order would do it, the bodies of a
+ * brain in parallel phases whose result depends only on their order (docs/crowds.md). Agent i reads rewards[i] and its
  * observation from the packed arrays: at discrete_offsets[i] / continuous_offsets[i] when given,
  * else right after agent i-1's values (agents packed back to back). discrete_total and
  * continuous_total are the arrays' lengths. Everything is checked first: on any bad input nothing

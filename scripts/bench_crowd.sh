@@ -7,23 +7,49 @@
 # build/bench-crowd.csv (raw) and, with gnuplot, build/bench-crowd.png (updates/s vs agents).
 # About 3 minutes on 2 cores.
 #   ./scripts/bench_crowd.sh [extra Google Benchmark flags, e.g. --benchmark_filter=tiny]
+# Beside an earlier build (its verve_crowd_bench, e.g. from a worktree of an older commit): each
+# repetition runs both, one after the other, and the table gains the earlier build's median and
+# the ratio new / earlier (this machine is shared: only ratios of runs made together count).
+#   BASELINE=/tmp/old-build/bench/verve_crowd_bench ./scripts/bench_crowd.sh --benchmark_filter=10000
 set -euo pipefail
 cd "$(dirname "$0")/.."
 ./scripts/build.sh verve_crowd_bench >/dev/null
 csv=build/bench-crowd.csv
-build/bench/verve_crowd_bench --benchmark_repetitions=3 --benchmark_report_aggregates_only=true \
-  --benchmark_min_time=0.2 --benchmark_format=csv "$@" >"$csv" 2>/dev/null
-# name = crowd/<shape>/<agents>/<brains>/<mode>; one line per median.
+baseline=${BASELINE:-}
+[ -z "$baseline" ] || [ -x "$baseline" ] || { echo "bench_crowd.sh: BASELINE=$baseline is not an executable" >&2; exit 2; }
+: >"$csv"
+: >"$csv.baseline"
+for rep in 1 2 3; do
+  build/bench/verve_crowd_bench --benchmark_min_time=0.2 --benchmark_format=csv "$@" 2>/dev/null >>"$csv"
+  if [ -n "$baseline" ]; then "$baseline" --benchmark_min_time=0.2 --benchmark_format=csv "$@" 2>/dev/null >>"$csv.baseline"; fi
+done
+# name = crowd/<shape>/<agents>/<brains>/<mode>; the median of its 3 runs, in the order first run.
 table=build/bench-crowd.txt
 awk -F, '
-  /^name,/ { for (i = 1; i <= NF; i++) { h = $i; gsub(/"/, "", h); if (h == "updates_per_s") col = i }; next }
-  $1 ~ /_median"?$/ {
-    name = $1; gsub(/"/, "", name); sub(/_median$/, "", name); sub(/\/real_time$/, "", name)
-    split(name, p, "/")
-    tiny = p[2] == "tiny"  # the targets for 10,000 agents (docs/performance.md): 2M/s tiny, 600k/s cart-pole
-    printf "%-10s %6s agents  %-10s %-16s %12.0f updates/s  %5.2fx of %s/s\n", p[2], p[3], p[4], p[5], $col,
-           $col / (tiny ? 2000000 : 600000), tiny ? "2M" : "600k"
-  }' "$csv" | tee "$table"
+  function median(list,   n, v, i, j, t) {
+    n = split(list, v, " ")
+    for (i = 1; i <= n; i++) for (j = i + 1; j <= n; j++) if (v[j] + 0 < v[i] + 0) { t = v[i]; v[i] = v[j]; v[j] = t }
+    return v[int((n + 1) / 2)]
+  }
+  FNR == 1 { file++ }
+  /^name,/ { for (i = 1; i <= NF; i++) { h = $i; gsub(/"/, "", h); if (h == "updates_per_s") col[file] = i }; next }
+  /^"crowd/ {
+    name = $1; gsub(/"/, "", name); sub(/\/real_time$/, "", name)
+    if (file == 1 && !(name in now)) order[++names] = name
+    if (file == 1) now[name] = now[name] " " $col[file]; else before[name] = before[name] " " $col[file]
+  }
+  END {
+    for (k = 1; k <= names; k++) {
+      name = order[k]
+      split(name, p, "/")
+      tiny = p[2] == "tiny"  # the targets for 10,000 agents (docs/performance.md): 2M/s tiny, 600k/s cart-pole
+      m = median(now[name])
+      line = sprintf("%-10s %6s agents  %-10s %-16s %12.0f updates/s  %5.2fx of %s/s", p[2], p[3], p[4], p[5], m,
+                     m / (tiny ? 2000000 : 600000), tiny ? "2M" : "600k")
+      if (name in before) { b = median(before[name]); line = line sprintf("   earlier %10.0f  now/earlier %5.2f", b, m / b) }
+      print line
+    }
+  }' "$csv" "$csv.baseline" | tee "$table"
 
 command -v gnuplot >/dev/null || { echo "(gnuplot missing: no plot)"; exit 0; }
 # Columns per agent count: for each shape, separate/loop, separate/batch_threads:2, one_brain/batch_threads:2.

@@ -1,9 +1,13 @@
 // Many agents in one call: Batch::update steps N agents (any shapes, separate or bodies of shared
 // brains) and spreads them over worker threads, on a pool of its own or on the host's job system.
 //
-// Results are exactly those of calling Agent::update on each agent in array order, for any
-// number of threads: agents that share nothing run in parallel; the bodies of one brain (and an
-// agent listed twice) share weights, so they run one after another, in array order, on one worker.
+// Results are the same for any number of threads. Separate agents get exactly the results of
+// Agent::update on each in array order (agents that share nothing run in parallel). The bodies of
+// one brain also run in parallel, in phases: each acts against the brain as the call found it
+// (plus its own learning step), then their weight changes are applied in array order; a step that
+// grows the brain is made whole afterwards. A brain that plans, or whose bodies include one listed
+// twice or shown an action, keeps single updates' results: its bodies run in array order on one
+// worker. docs/crowds.md, "Bodies in parallel".
 #pragma once
 #include <cstddef>
 #include <cstdint>

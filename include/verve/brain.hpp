@@ -2,9 +2,9 @@
 // through. Each body is an Agent with its own short-term memory (eligibility traces, previous step,
 // random stream) and all of them train the same weights, so what one NPC learns, all know.
 //
-// Thread rules: a brain and all its bodies count as one agent: one thread at a time (Batch
-// updates the bodies of one brain in their order on one worker). A body keeps its brain alive:
-// destroying the Brain first is fine.
+// Thread rules: a brain and all its bodies count as one agent: one thread at a time (a Batch
+// updates the bodies of one brain in parallel, in phases whose result depends only on their
+// order: docs/crowds.md). A body keeps its brain alive: destroying the Brain first is fine.
 #pragma once
 #include <cstddef>
 #include <cstdint>

@@ -52,8 +52,9 @@ bool Agent::Impl::prepareShared(float reward, ObservationView obs, float dt, cor
     }
     const bool samples = s.selection == ActionSelection::Sample;
     const float hopeless = s.learning && samples ? core::hopelessValue(k.values) : -std::numeric_limits<float>::infinity();
-    // Its own learning step counts, as in a single update (acting before it halved the food an
-    // arena's shared brain found, docs/crowds.md); the other bodies' steps reach the brain later.
+    // Its own learning step counts, as in a single update (single updates that acted before it found
+    // a third of the food in the NPC arena, docs/crowds.md); the other bodies' steps reach the
+    // brain later.
     const std::uint32_t action = s.td.chooseActionStaged(s.weights, s.current, s.rng, s.probabilities, s.latestValue,
                                                          !samples, hopeless);
     s.stats.value = core::bounded(s.latestValue, k.values);

@@ -27,10 +27,20 @@ void TdLearner::stage(float delta, TdRates rates, std::uint32_t parts) {
     for (std::uint32_t p = 0; p < parts; ++p) partStart_[p + 1] += partStart_[p];
     stagedLive_.resize(liveCount_);
     stagedRows_.resize(std::size_t(liveCount_) * stride_);
+    const std::size_t stride = stride_;
+    // The live rows lie scattered over the traces and a crowd's are not in cache: each is asked for
+    // 16 features ahead, as trainDecay's kernel does.
+    constexpr std::uint32_t kAhead = 16;
     for (std::uint32_t i = 0; i < liveCount_; ++i) {
+        if (i + kAhead < liveCount_) {
+            prefetchLine(traces_.data() + std::size_t(live_[i + kAhead]) * stride);
+            prefetchLineForWrite(stagedRows_.data() + std::size_t(i + kAhead) * stride);
+        }
         const std::uint32_t at = partStart_[partOf(live_[i], parts)]++;
         stagedLive_[at] = live_[i];
-        std::copy_n(traces_.data() + std::size_t(live_[i]) * stride_, stride_, stagedRows_.data() + std::size_t(at) * stride_);
+        const float* e = traces_.data() + std::size_t(live_[i]) * stride;
+        float* copy = stagedRows_.data() + std::size_t(at) * stride;
+        for (std::size_t c = 0; c < stride; ++c) copy[c] = e[c];  // a few floats: no call to memmove
     }
     for (std::uint32_t p = parts; p > 0; --p) partStart_[p] = partStart_[p - 1];
     partStart_[0] = 0;
@@ -76,16 +86,30 @@ std::uint32_t TdLearner::chooseActionStaged(const WeightTable& w, const std::vec
         // The body's own step on the rows it reads: a feature's trace is zero unless it is live,
         // and a live one's row takes w + step * e (an actor weight clamped to its range, as
         // trainPart; the sums' rounding may differ from a single update's, never between threads).
-        for (const ActiveFeature& f : phi) {
-            // A feature made since this body last marked lies beyond its traces: not live.
-            if (std::size_t(f.index) * stride_ >= traces_.size()) continue;
-            const float* e = traces_.data() + std::size_t(f.index) * stride_;
-            if (e[0] == 0.0f) continue;
-            const float* row = w.row(f.index);
-            for (std::uint32_t c = 0; c < stride_; ++c) {
-                float moved = row[c] + stagedStep_[c] * e[c];
-                if (c >= WeightLayout::kPolicy && stagedBounded_) moved = stagedRange_.clamp(moved);
-                activations[c] += f.activation * (moved - row[c]);
+        // Only features active at the trace threshold or more count: the rows mark() is about to
+        // touch. The others (most of a 4-sigma neighbourhood) add less than the threshold times
+        // their step each, and reading their rows was most of a crowd's update. As in mark(): a
+        // branch-free filter first, then no branch on what the (uncached) rows hold, so that
+        // their misses overlap.
+        constexpr std::size_t kChunk = 64;
+        ActiveFeature strong[kChunk];
+        const std::size_t rows = traces_.size() / stride_;  // features made since the last mark have none
+        for (std::size_t from = 0; from < phi.size(); from += kChunk) {
+            const std::size_t end = std::min(phi.size(), from + kChunk);
+            std::size_t n = 0;
+            for (std::size_t i = from; i < end; ++i) {
+                strong[n] = phi[i];
+                n += phi[i].activation >= threshold_ && phi[i].index < rows;
+            }
+            for (std::size_t i = 0; i < n; ++i) {
+                const float* e = traces_.data() + std::size_t(strong[i].index) * stride_;
+                const float* row = w.row(strong[i].index);
+                const float live = e[0] != 0.0f ? strong[i].activation : 0.0f;
+                for (std::uint32_t c = 0; c < stride_; ++c) {
+                    float moved = row[c] + stagedStep_[c] * e[c];
+                    if (c >= WeightLayout::kPolicy && stagedBounded_) moved = stagedRange_.clamp(moved);
+                    activations[c] += live * (moved - row[c]);
+                }
             }
         }
     }

@@ -9,7 +9,8 @@ namespace Verve
     /// (traces, previous step, random stream) that trains the brain's shared weights, so what one NPC
     /// learns, all of them know.</summary>
     /// <remarks>A brain and all its bodies count as one agent for threads: use them from one thread at a
-    /// time (a <see cref="Batch"/> updates a brain's bodies in order on one worker); an overlapping call from
+    /// time (a <see cref="Batch"/> updates a brain's bodies in parallel, in phases whose result depends only on
+    /// their order: docs/crowds.md); an overlapping call from
     /// another thread throws <see cref="VerveException"/> with <see cref="ResultCode.InvalidState"/>. A body
     /// keeps its brain alive: disposing the brain first is fine.</remarks>
     public sealed class Brain : IDisposable
