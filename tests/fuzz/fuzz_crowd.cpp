@@ -30,38 +30,29 @@ void* VERVE_CALL enqueueReversed(verve_task_fn task, uint32_t count, uint32_t mi
 }
 void VERVE_CALL finishNothing(void*, void*) {}
 
+// A batch of `workers` on Verve's pool, or with the host's reversed ranges above.
+verve_batch* makeBatch(uint32_t workers, bool host) {
+    verve_batch_desc d;
+    verve_batch_desc_default(&d);
+    d.worker_count = workers;
+    if (host) {
+        d.enqueue_task = enqueueReversed;
+        d.finish_task = finishNothing;
+    }
+    verve_batch* b = nullptr;
+    VERVE_FUZZ_CHECK(verve_batch_create(&d, &b) == VERVE_OK);
+    return b;
+}
+
 // Made once: starting threads per input would be most of the run's time. The twin's has one worker.
 verve_batch* twinBatch() {
-    static verve_batch* const one = [] {
-        verve_batch_desc d;
-        verve_batch_desc_default(&d);
-        d.worker_count = 1;
-        verve_batch* b = nullptr;
-        VERVE_FUZZ_CHECK(verve_batch_create(&d, &b) == VERVE_OK);
-        return b;
-    }();
+    static verve_batch* const one = makeBatch(1, false);
     return one;
 }
 
 verve_batch* batch(bool host) {
-    static verve_batch* const pool = [] {
-        verve_batch_desc d;
-        verve_batch_desc_default(&d);
-        d.worker_count = 2;
-        verve_batch* b = nullptr;
-        VERVE_FUZZ_CHECK(verve_batch_create(&d, &b) == VERVE_OK);
-        return b;
-    }();
-    static verve_batch* const hosted = [] {
-        verve_batch_desc d;
-        verve_batch_desc_default(&d);
-        d.worker_count = 3;
-        d.enqueue_task = enqueueReversed;
-        d.finish_task = finishNothing;
-        verve_batch* b = nullptr;
-        VERVE_FUZZ_CHECK(verve_batch_create(&d, &b) == VERVE_OK);
-        return b;
-    }();
+    static verve_batch* const pool = makeBatch(2, false);
+    static verve_batch* const hosted = makeBatch(3, true);
     return host ? hosted : pool;
 }
 
