@@ -341,8 +341,9 @@ func test_progress():
 		var ok = false
 		if brain:
 			# What sharing is for: eight times the experience per minute in one set of weights. Measured
-			# over 6 triples of worlds (docs/godot.md): early 2.04 .. 3.17, late 6.46 .. 11.10 (worlds
-			# 1-3: 2.04, 10.38), where one brain each reaches at most 1.48 early and 7.23 late.
+			# over 6 triples of worlds, the bodies in the batch's phases (docs/godot.md): early 1.58 ..
+			# 3.40, late 6.71 .. 11.54 (worlds 1-6: 1.95, 8.87), where one brain each reaches at most
+			# 1.48 early and 7.23 late.
 			ok = early > 1.5 and late > 7.0
 		else:
 			print("saved and loaded NPC 0: %d of %d actions differ" % [twin_mismatches, 2 * 600])
