@@ -63,17 +63,38 @@ function brainOfThree() {
 }
 const obs = (i, t) => ({ continuous: [Math.sin(t * 0.1 + i), Math.cos(t * 0.07 - i)] });
 
-test('brains: bodies learn into one brain, and a batch does exactly what updates in order do', () => {
-  const a = brainOfThree();
-  const b = brainOfThree();
+test('a batch does exactly what updates in order do for separate agents', () => {
+  const make = () => [0, 1, 2].map((i) => verve.createAgent({ continuous: 2, actions: 3, seed: 3 + i }));
+  const a = make();
+  const b = make();
   const batch = verve.createBatch();
   for (let t = 0; t < 200; ++t) {
     const rewards = [0.1 * Math.sin(t), -0.2, 0.3];
-    const one = a.bodies.map((body, i) => body.update(rewards[i], obs(i, t), 0.05));
-    const many = batch.update(b.bodies, rewards, b.bodies.map((_, i) => obs(i, t)), 0.05);
+    const one = a.map((agent, i) => agent.update(rewards[i], obs(i, t), 0.05));
+    const many = batch.update(b, rewards, b.map((_, i) => obs(i, t)), 0.05);
     assert.deepEqual(Array.from(many), one, `step ${t}`);
   }
+  a.forEach((agent, i) => assert.deepEqual(agent.saveBinaryBytes(), b[i].saveBinaryBytes()));
+  for (const agent of [...a, ...b]) agent.dispose();
+  batch.dispose();
+});
+
+// A brain's bodies in a batch act against the brain as the call found it, their changes applied in
+// order (docs/crowds.md, "Bodies in parallel"): the same calls give the same brain, and it learns.
+test('brains: bodies learn into one brain in a batch, the same calls the same brain', () => {
+  const a = brainOfThree();
+  const b = brainOfThree();
+  const fresh = a.brain.saveBinaryBytes();
+  const batch = verve.createBatch();
+  for (let t = 0; t < 200; ++t) {
+    const rewards = [0.1 * Math.sin(t), -0.2, 0.3];
+    const first = batch.update(a.bodies, rewards, a.bodies.map((_, i) => obs(i, t)), 0.05);
+    const second = batch.update(b.bodies, rewards, b.bodies.map((_, i) => obs(i, t)), 0.05);
+    assert.deepEqual(Array.from(second), Array.from(first), `step ${t}`);
+  }
+  assert.ok(a.brain.rbfCount() > 0);
   assert.equal(a.brain.rbfCount(), b.brain.rbfCount());
+  assert.notDeepEqual(a.brain.saveBinaryBytes(), fresh);
   assert.deepEqual(a.brain.saveBinaryBytes(), b.brain.saveBinaryBytes());
   const copy = verve.loadBrain(a.brain.saveBytes());
   assert.equal(copy.rbfCount(), a.brain.rbfCount());
