@@ -318,7 +318,8 @@ static class MonoHost
             brain.Dispose();
         });
 
-        // One brain, two bodies, a batch over both on 2 threads: the same actions as updating them in order.
+        // One brain, two bodies, a batch over both on 2 threads: the same actions as a batch of 1 thread over a
+        // twin brain (a brain's bodies act in the batch's phases, docs/crowds.md).
         Check("Brain..ctor(AgentOptions); Brain.CreateBody(); Brain.get_RbfCount(); Batch..ctor(Int32); Batch.get_WorkerCount(); " +
               "Batch.Update(Agent[], ReadOnlySpan<Single>, ReadOnlySpan<Int32>, ReadOnlySpan<Single>, Single, Span<Int32>, Span<ResultCode>); " +
               "Batch.Dispose()", () =>
@@ -328,18 +329,20 @@ static class MonoHost
             Agent[] soloBodies = { solo.CreateBody(), solo.CreateBody() };
             Agent[] bodies = { crowd.CreateBody(), crowd.CreateBody() };
             var batch = new Batch(2);
+            var one = new Batch(1);
             Require(batch.WorkerCount == 2, "worker count");
             var actions = new int[2];
+            var twinActions = new int[2];
             var results = new ResultCode[2];
             for (int step = 0; step < 50; step++)
             {
                 float[] sensors = { (float)Math.Sin(step * 0.3), (float)Math.Cos(step * 0.2) };
                 float[] rewards = { step % 3 == 0 ? 1f : 0f, 0f };
-                int a0 = soloBodies[0].Update(rewards[0], null, new[] { sensors[0] }, 0.1f);
-                int a1 = soloBodies[1].Update(rewards[1], null, new[] { sensors[1] }, 0.1f);
+                one.Update(soloBodies, rewards, new int[0], sensors, 0.1f, twinActions);
                 batch.Update(bodies, rewards, new int[0], sensors, 0.1f, actions, results);
-                Require(actions[0] == a0 && actions[1] == a1, "the batch acted unlike updates in order");
+                Require(actions[0] == twinActions[0] && actions[1] == twinActions[1], "the batch acted unlike a batch of 1 thread");
             }
+            one.Dispose();
             Require(crowd.RbfCount == solo.RbfCount && crowd.RbfCount > 0, "RBF counts differ");
             float[] nan = { float.NaN, 0f };
             var e = Expect<VerveException>(() => batch.Update(bodies, new float[2], new int[0], nan, 0.1f, actions, results));
