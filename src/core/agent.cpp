@@ -298,45 +298,58 @@ std::uint32_t Agent::Impl::step(float reward, ObservationView obs, float dt, Act
     if (s.learning && s.hasPrevious) {
         if (plans) s.learnModel(r, obs.discrete, dt);
         if (s.learnsFromRealSteps()) {
-            // V(s) is the value the previous update left in latestValue: no weight changes
-            // between two updates (endEpisode, resets and restores clear or recompute it),
-            // unless other bodies of a shared brain trained it since.
-            const float before = s.sharesBrain ? s.td.value(s.weights, s.previous, s.ahead) : s.latestValue;
-            const float next = core::bounded(s.td.value(s.weights, s.current, s.ahead), k.values);
-            const float delta = r + k.gamma * next - core::bounded(before, k.values);
-            s.learnReal(delta, k, k.traceDecay);
+            s.learnReal(s.realTdError(r, k), k, k.traceDecay);
         }
     }
     // Plan from the state just reached, before acting, so the action already uses what it taught.
     if (plans) s.plan(k, mask.allowed);
 
-    // A learning agent that samples explores a state it values at the floor (core::hopelessValue); a
-    // greedy or frozen one plays its policy.
     // A demonstrated step draws nothing: what the policy would do is only read (probabilities, V).
     const bool samples = s.selection == ActionSelection::Sample && demonstrated == nullptr;
-    const float hopeless = s.learning && samples ? core::hopelessValue(k.values) : -std::numeric_limits<float>::infinity();
+    const float hopeless = s.hopelessFor(samples, k);
     std::uint32_t action = s.td.chooseAction(s.weights, s.current, s.rng, s.probabilities, s.latestValue,
                                              mask.allowed, !samples, hopeless, s.ahead);
-    s.stats.value = core::bounded(s.latestValue, k.values);
-    s.recordProbabilities(mask.allowed, s.latestValue <= hopeless);
+    s.recordChoice(mask.allowed, hopeless, k);
     if (demonstrated != nullptr) {
         // The demonstrator's action stands for the agent's own (core/demonstration.hpp).
         action = *demonstrated;
         if (s.learning) core::imitate(s.weights, s.current, action, mask.allowed, k.rates.policy, k.rates.policyRange);
     }
     if (s.learning && s.learnsFromRealSteps()) s.td.mark(s.current, action, s.rep.featureCount());
-    if (s.teacher.armed()) s.teacher.remember(dt, action, s.current);
-
-    std::swap(s.previous, s.current);
-    s.previousAction = action;
-    s.previousDiscrete.assign(obs.discrete, obs.discrete + obs.numDiscrete);
-    std::swap(s.previousContinuous, s.normalized);  // both hold numContinuous values: no copy
-    s.hasPrevious = true;
-
-    ++s.stats.steps;
-    s.stats.rbfCount = s.rep.featureCount();
-    s.stats.liveTraces = s.td.liveCount();
+    s.endStep(obs, dt, action);
     return action;
+}
+
+float Agent::Impl::realTdError(float r, const StepConstants& k) const {
+    // V(s) is the value the previous update left in latestValue: no weight changes between two
+    // updates (endEpisode, resets and restores clear or recompute it), unless other bodies of a
+    // shared brain trained it since.
+    const float before = sharesBrain ? td.value(weights, previous, ahead) : latestValue;
+    const float next = core::bounded(td.value(weights, current, ahead), k.values);
+    return r + k.gamma * next - core::bounded(before, k.values);
+}
+
+float Agent::Impl::hopelessFor(bool samples, const StepConstants& k) const {
+    // A learning agent that samples explores a state it values at the floor (core::hopelessValue); a
+    // greedy or frozen one plays its policy.
+    return learning && samples ? core::hopelessValue(k.values) : -std::numeric_limits<float>::infinity();
+}
+
+void Agent::Impl::recordChoice(const std::uint8_t* allowed, float hopeless, const StepConstants& k) {
+    stats.value = core::bounded(latestValue, k.values);
+    recordProbabilities(allowed, latestValue <= hopeless);
+}
+
+void Agent::Impl::endStep(ObservationView obs, float dt, std::uint32_t action) {
+    if (teacher.armed()) teacher.remember(dt, action, current);
+    std::swap(previous, current);
+    previousAction = action;
+    previousDiscrete.assign(obs.discrete, obs.discrete + obs.numDiscrete);
+    std::swap(previousContinuous, normalized);  // both hold numContinuous values: no copy
+    hasPrevious = true;
+    ++stats.steps;
+    stats.rbfCount = rep.featureCount();
+    stats.liveTraces = td.liveCount();
 }
 
 void Agent::endEpisode(float finalReward) {

@@ -40,6 +40,14 @@ struct Agent::Impl {
     // A real step's TD error trains the critic and actor (traces then decay by `decay`); the
     // error's size informs Adaptation::ActorScale (core/td_scale.hpp).
     void learnReal(float delta, const StepConstants& k, float decay);
+    // The TD error of the real step that ends in `current` with (clamped) reward r.
+    float realTdError(float r, const StepConstants& k) const;
+    // Where a state counts as hopeless for this step's choice (core::hopelessValue), and what the
+    // choice leaves in the stats and probabilities.
+    float hopelessFor(bool samples, const StepConstants& k) const;
+    void recordChoice(const std::uint8_t* allowed, float hopeless, const StepConstants& k);
+    // The step's end: the teacher's memory, `current` becomes `previous`, the stats.
+    void endStep(ObservationView obs, float dt, std::uint32_t action);
     // A trial ends (endEpisode, truncateEpisode): its length informs the horizon.
     void endTrial();
     void resetShortTermMemory();

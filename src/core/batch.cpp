@@ -271,7 +271,6 @@ void Batch::Impl::runPhaseItems(Phase p, std::uint32_t begin, std::uint32_t end,
             for (std::uint32_t k = begin; k < end; ++k) {
                 prefetchAhead(phased.data(), k, end);
                 const std::uint32_t i = phased[k];
-                if (mode[i] != Mode::Prepared) continue;
                 Agent::Impl& body = *s.agents[i]->impl_;
                 try {
                     if (body.prepareShared(s.rewards[i], views[i], s.dt, mine, parts, seen[k])) {

@@ -6,8 +6,6 @@
 // part of the features, each weight taking the bodies' changes in body order. The result depends on
 // the bodies' order only, never on the number of threads. A step that would change the brain in any
 // other way (a new RBF, the model and its plans) is not prepared: the batch makes it whole afterwards.
-#include <limits>
-#include <utility>
 
 #include "core/agent_impl.hpp"
 #include "core/observation_check.hpp"
@@ -42,36 +40,24 @@ bool Agent::Impl::prepareShared(float reward, ObservationView obs, float dt, cor
     const StepConstants k = s.constantsFor(dt, rewards);
     const bool learns = s.learning && s.hasPrevious && s.learnsFromRealSteps();
     if (learns) {
-        const float before = s.td.value(s.weights, s.previous, s.ahead);
-        const float next = core::bounded(s.td.value(s.weights, s.current, s.ahead), k.values);
-        const float delta = r + k.gamma * next - core::bounded(before, k.values);
+        const float delta = s.realTdError(r, k);
         s.td.stage(delta, k.rates, parts);
         seen.seesDelta = k.traceDecay > 0.0f;  // as learnReal
         seen.delta = delta;
         s.stats.tdError = delta;
     }
     const bool samples = s.selection == ActionSelection::Sample;
-    const float hopeless = s.learning && samples ? core::hopelessValue(k.values) : -std::numeric_limits<float>::infinity();
+    const float hopeless = s.hopelessFor(samples, k);
     // Its own learning step counts, as in a single update (single updates that acted before it found
     // a third of the food in the NPC arena, docs/crowds.md); the other bodies' steps reach the
     // brain later.
     const std::uint32_t action = s.td.chooseActionStaged(s.weights, s.current, s.rng, s.probabilities, s.latestValue,
                                                          !samples, hopeless);
-    s.stats.value = core::bounded(s.latestValue, k.values);
-    s.recordProbabilities(nullptr, s.latestValue <= hopeless);
+    s.recordChoice(nullptr, hopeless, k);
     // The traces are the body's own: they decay and take the new step's at once.
     if (learns) s.td.decayStaged(k.traceDecay);
     if (s.learning && s.learnsFromRealSteps()) s.td.mark(s.current, action, s.rep.featureCount());
-    if (s.teacher.armed()) s.teacher.remember(dt, action, s.current);
-
-    std::swap(s.previous, s.current);
-    s.previousAction = action;
-    s.previousDiscrete.assign(obs.discrete, obs.discrete + obs.numDiscrete);
-    std::swap(s.previousContinuous, s.normalized);
-    s.hasPrevious = true;
-    ++s.stats.steps;
-    s.stats.rbfCount = s.rep.featureCount();
-    s.stats.liveTraces = s.td.liveCount();
+    s.endStep(obs, dt, action);
     return true;
 }
 

@@ -66,15 +66,13 @@ void TdLearner::decayStaged(float decay) {
 void TdLearner::trainPart(WeightTable& w, std::uint32_t part) const {
     if (!staged_ || part + 1 >= partStart_.size()) return;
     const float* step = stagedStep_.data();
-    for (std::uint32_t i = partStart_[part]; i < partStart_[part + 1]; ++i) {
+    const std::uint32_t begin = partStart_[part], end = partStart_[part + 1];
+    for (std::uint32_t i = begin; i < end; ++i) {
         float* row = w.row(stagedLive_[i]);
         const float* e = stagedRows_.data() + std::size_t(i) * stride_;
         for (std::uint32_t c = 0; c < stride_; ++c) row[c] += step[c] * e[c];
-        if (!stagedBounded_) continue;
-        for (std::uint32_t a = 0; a < numActions_; ++a) {
-            row[WeightLayout::kPolicy + a] = stagedRange_.clamp(row[WeightLayout::kPolicy + a]);
-        }
     }
+    if (stagedBounded_) clampPolicy(w, stagedLive_.data() + begin, end - begin, stagedRange_);
 }
 
 std::uint32_t TdLearner::chooseActionStaged(const WeightTable& w, const std::vector<ActiveFeature>& phi, Rng& rng,
