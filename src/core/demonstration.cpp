@@ -13,9 +13,11 @@ void imitate(WeightTable& w, const std::vector<ActiveFeature>& phi, std::uint32_
         if (!actionAllowed(allowed, b)) continue;
         float x = 0.0f;
         for (const ActiveFeature& f : phi) x += w.row(f.index)[WeightLayout::kPolicy + b] * f.activation;
-        // Saturated preferences (|x| beyond ~88) give a step of 0 or +-1: always finite.
+        // Saturated preferences (|x| beyond ~88) give a step of 0 or +-1: always finite. Held to the
+        // limit of a TD step (TdLearner::kStepLimit), so that no policy rate a descriptor allows
+        // takes a weight anywhere near AgentSnapshot::kWeightLimit.
         const float target = b == action ? 1.0f : 0.0f;
-        const float step = rate * (target - sigmoid(x));
+        const float step = std::clamp(rate * (target - sigmoid(x)), -TdLearner::kStepLimit, TdLearner::kStepLimit);
         for (const ActiveFeature& f : phi) {
             float& weight = w.row(f.index)[WeightLayout::kPolicy + b];
             weight += step * f.activation;

@@ -198,6 +198,28 @@ TEST_F(CApi, DemonstratedStepsAreValidatedAndPullThePolicyTowardsTheirAction) {
     EXPECT_GT(p[2], 0.75f) << p[0] << " " << p[1];  // uniform: 1/3; 0.87 measured
 }
 
+// fuzz_crowd found it: a demonstrated step moved the actor by the policy rate times at most 1,
+// unclamped, so the largest policy_multiplier the descriptor allows (any finite one) put a weight
+// at 1e37 in one step, and the agent could no longer be saved (weights beyond +-1e20 are refused
+// as corrupt). Its steps are held to the TD steps' limit, as the critic's and actor's are.
+TEST(CApiDemonstration, AHugePolicyMultiplierKeepsTheAgentSaveable) {
+    verve_agent_desc d;
+    verve_agent_desc_default(&d);
+    d.num_continuous_sensors = 1;
+    d.num_actions = 5;
+    d.policy_multiplier = 1.5e38f;
+    verve_agent* agent = nullptr;
+    ASSERT_EQ(verve_agent_create(&d, &agent), VERVE_OK) << verve_last_error();
+    for (int i = 0; i < 20; ++i) {
+        const float c = 0.1f * static_cast<float>(i % 3);
+        ASSERT_EQ(verve_agent_update_demonstrated(agent, 0.0f, nullptr, 0, &c, 1, 0.1f, nullptr, 0, i % 5), VERVE_OK)
+            << verve_last_error();
+    }
+    size_t size = 0;
+    EXPECT_EQ(verve_agent_save_memory(agent, nullptr, &size), VERVE_OK) << verve_last_error();
+    verve_agent_destroy(agent);
+}
+
 TEST_F(CApi, PraiseIsValidatedAndMovesThePolicyForTheActsBeforeIt) {
     const std::string before = saved();
     expectRefusedUnchanged(VERVE_ERROR_INVALID_ARGUMENT, verve_agent_teach(nullptr, 1.0f));

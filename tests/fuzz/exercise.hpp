@@ -1,6 +1,7 @@
 // What every fuzz target does with an agent it managed to create or load: the calls a game makes
 // every frame, driven by the fuzzer's remaining bytes, checking the invariants the C ABI promises.
 #pragma once
+#include <cstdio>
 #include <cstdlib>
 #include <vector>
 
@@ -8,10 +9,13 @@
 
 namespace verve_fuzz {
 
-// The library broke a promise: abort so libFuzzer records the input.
-#define VERVE_FUZZ_CHECK(condition) \
-    do {                            \
-        if (!(condition)) std::abort(); \
+// The library broke a promise: say which, and abort so libFuzzer records the input.
+#define VERVE_FUZZ_CHECK(condition)                                                             \
+    do {                                                                                        \
+        if (!(condition)) {                                                                     \
+            std::fprintf(stderr, "%s:%d: the check failed: %s\n", __FILE__, __LINE__, #condition); \
+            std::abort();                                                                       \
+        }                                                                                       \
     } while (0)
 
 // What one input may spend on saves, in bytes of save text: a save takes time in proportion to
