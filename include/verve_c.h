@@ -82,6 +82,14 @@ typedef enum verve_discrete_prediction {
     VERVE_DISCRETE_PREDICTION_ORDINAL = 1      /* the original's single rounded scalar */
 } verve_discrete_prediction;
 
+typedef enum verve_sensor_grouping {
+    VERVE_GROUPING_AUTO = 0,  /* one RBF lattice over up to 4 continuous sensors; beyond that one per
+                                 sensor and one per neighbouring pair (i, i + 1): list related
+                                 sensors (adjacent rays, bearing and distance) next to each other */
+    VERVE_GROUPING_JOINT = 1, /* one lattice over all continuous sensors (the thesis): resolution^n RBFs */
+    VERVE_GROUPING_CUSTOM = 2 /* the lattices listed in sensor_groups */
+} verve_sensor_grouping;
+
 typedef enum verve_action_selection {
     VERVE_ACTION_SAMPLE = 0, /* draw each action with its probability: explores, learns (default) */
     VERVE_ACTION_GREEDY = 1  /* always the most probable action: deterministic play, a shipped NPC */
@@ -94,6 +102,7 @@ typedef enum verve_sensor_kind {
 
 #define VERVE_MAX_DISCRETE_SENSORS 16
 #define VERVE_MAX_CONTINUOUS_SENSORS 16
+#define VERVE_MAX_SENSOR_GROUPS 64
 
 typedef struct verve_agent verve_agent; /* opaque */
 typedef struct verve_brain verve_brain; /* opaque: a learner shared by many bodies (agents) */
@@ -138,6 +147,12 @@ typedef struct verve_agent_desc {
     /* V4. 64 bits wide so that it starts exactly where V3 ended (V3 had 4 bytes of tail padding). */
     uint64_t adaptation; /* VERVE_ADAPT_* bits: settings the agent sets for itself from what it
                             experiences (default VERVE_ADAPT_ALL; 0: every setting as given) */
+
+    /* V5: which continuous sensors share an RBF lattice (docs/algorithm.md, "Many sensors"). */
+    uint32_t sensor_grouping;   /* verve_sensor_grouping (default AUTO) */
+    uint32_t num_sensor_groups; /* CUSTOM: how many entries of sensor_groups are used (else 0) */
+    uint64_t sensor_groups[VERVE_MAX_SENSOR_GROUPS]; /* CUSTOM: bit i set = continuous sensor i is in
+                                                        the group; every sensor in at least one */
 } verve_agent_desc;
 
 /* verve_agent_desc.adaptation bits (docs/algorithm.md, "Learning at defaults"). */
@@ -152,11 +167,13 @@ typedef struct verve_agent_desc {
 
 /* The sizes of verve_agent_desc a library accepts in struct_size: each release's full struct.
  * V1 ended after `seed` (no planning fields); V2 after discrete_prediction; V3 after
- * policy_weight_bound; V4 is the current struct. Fields beyond a smaller struct_size take their defaults. Any other size is refused. */
+ * policy_weight_bound; V4 after adaptation; V5 is the current struct. Fields beyond a smaller
+ * struct_size take their defaults. Any other size is refused. */
 #define VERVE_AGENT_DESC_SIZE_V1 ((uint32_t)offsetof(verve_agent_desc, planning))
 #define VERVE_AGENT_DESC_SIZE_V2 ((uint32_t)offsetof(verve_agent_desc, max_rbfs))
 #define VERVE_AGENT_DESC_SIZE_V3 ((uint32_t)offsetof(verve_agent_desc, adaptation))
-#define VERVE_AGENT_DESC_SIZE_V4 ((uint32_t)sizeof(verve_agent_desc))
+#define VERVE_AGENT_DESC_SIZE_V4 ((uint32_t)offsetof(verve_agent_desc, sensor_grouping))
+#define VERVE_AGENT_DESC_SIZE_V5 ((uint32_t)sizeof(verve_agent_desc))
 
 typedef struct verve_agent_stats {
     uint32_t struct_size;           /* VERVE_AGENT_STATS_SIZE_V1 or _V2 (sizeof): only that many bytes are written */

@@ -23,6 +23,15 @@ enum class DiscretePrediction : std::uint8_t {
     Ordinal = 1,      // the original's single scalar output, rounded to the nearest value
 };
 
+// Which continuous sensors share an RBF lattice (docs/algorithm.md, "Many sensors"). One lattice
+// over n sensors needs resolution^n RBFs; several over small groups, summed, need far fewer.
+enum class SensorGrouping : std::uint8_t {
+    Auto = 0,    // one lattice over up to 4 continuous sensors; beyond that a lattice per sensor and
+                 // one per neighbouring pair (sensors i and i + 1): list related sensors together
+    Joint = 1,   // one lattice over all continuous sensors (the thesis)
+    Custom = 2,  // the lattices listed in sensorGroups
+};
+
 // What an agent may set for itself (AgentDescriptor::adaptation): bits.
 struct Adaptation {
     // The discount horizon follows how long trials last: tauDiscount is then its shortest
@@ -54,6 +63,7 @@ struct DescriptorLimits {
     static constexpr std::uint32_t kMaxPlanningSteps = 100000;
     static constexpr std::uint64_t kDefaultMaxRbfs = 1000000;
     static constexpr std::uint64_t kMaxRbfs = 0xFFFFFFFEull;  // feature indices are 32-bit; also "unlimited"
+    static constexpr std::uint32_t kMaxSensorGroups = 64;
 };
 
 // Which names validate() gives the fields in its messages: the C++ members or the C ABI's.
@@ -69,6 +79,10 @@ struct AgentDescriptor {
     std::uint32_t resolution = 10;                    // RBFs across [-1, 1]; width sigma = 2 / resolution
     std::uint32_t numActions = 2;
     RbfAllocation allocation = RbfAllocation::Dynamic;
+    SensorGrouping grouping = SensorGrouping::Auto;
+    // Custom grouping: one lattice per entry, a bitmask of continuous sensors (bit i: sensor i).
+    // Every continuous sensor must be in at least one group. Empty otherwise.
+    std::vector<std::uint64_t> sensorGroups;
 
     // Learning constants as time constants in seconds (thesis chapter 4).
     float tauValue = 0.1f;        // critic learning rate eta = (1 - e^(-dt/tau)) / sum

@@ -11,7 +11,7 @@
 namespace verve {
 
 struct AgentSnapshot {
-    static constexpr std::uint32_t kFormatVersion = 1;
+    static constexpr std::uint32_t kFormatVersion = 2;  // 2: sensor groups (written only by saves that have them)
 
     AgentDescriptor descriptor;
     bool learning = true;

@@ -14,7 +14,8 @@ void requireKnownSize(std::uint32_t size) {
     if (!isKnownDescSize(size)) {
         refuse("struct_size " + std::to_string(size) + " is not a verve_agent_desc size this library knows (" +
                std::to_string(VERVE_AGENT_DESC_SIZE_V1) + ", " + std::to_string(VERVE_AGENT_DESC_SIZE_V2) + ", " +
-               std::to_string(VERVE_AGENT_DESC_SIZE_V3) + " or " + std::to_string(VERVE_AGENT_DESC_SIZE_V4) +
+               std::to_string(VERVE_AGENT_DESC_SIZE_V3) + ", " + std::to_string(VERVE_AGENT_DESC_SIZE_V4) + " or " +
+               std::to_string(VERVE_AGENT_DESC_SIZE_V5) +
                "); fill the struct with verve_agent_desc_init");
     }
 }
@@ -27,7 +28,7 @@ void requireFlag(std::uint32_t value, const std::string& name) {
 
 bool isKnownDescSize(std::uint32_t size) noexcept {
     return size == VERVE_AGENT_DESC_SIZE_V1 || size == VERVE_AGENT_DESC_SIZE_V2 || size == VERVE_AGENT_DESC_SIZE_V3 ||
-           size == VERVE_AGENT_DESC_SIZE_V4;
+           size == VERVE_AGENT_DESC_SIZE_V4 || size == VERVE_AGENT_DESC_SIZE_V5;
 }
 
 // The full current struct for a descriptor: the one place the two layouts meet field by field.
@@ -62,6 +63,9 @@ static verve_agent_desc fullDesc(const AgentDescriptor& in) noexcept {
     d.max_rbfs = in.maxRbfs;
     d.policy_weight_bound = in.policyWeightBound;
     d.adaptation = in.adaptation;
+    d.sensor_grouping = static_cast<std::uint32_t>(in.grouping);
+    d.num_sensor_groups = static_cast<std::uint32_t>(in.sensorGroups.size());  // validated: <= VERVE_MAX_SENSOR_GROUPS
+    for (std::size_t i = 0; i < in.sensorGroups.size() && i < VERVE_MAX_SENSOR_GROUPS; ++i) d.sensor_groups[i] = in.sensorGroups[i];
     return d;
 }
 
@@ -126,6 +130,15 @@ AgentDescriptor toDescriptor(const verve_agent_desc& in) {
                std::to_string(VERVE_ADAPT_ALL) + ")");
     }
     out.adaptation = static_cast<std::uint32_t>(d.adaptation);
+    if (d.sensor_grouping > VERVE_GROUPING_CUSTOM) {
+        refuse("sensor_grouping must be 0 (AUTO), 1 (JOINT) or 2 (CUSTOM), not " + std::to_string(d.sensor_grouping));
+    }
+    if (d.num_sensor_groups > VERVE_MAX_SENSOR_GROUPS) {
+        refuse("num_sensor_groups is " + std::to_string(d.num_sensor_groups) + ", at most " +
+               std::to_string(VERVE_MAX_SENSOR_GROUPS));
+    }
+    out.grouping = static_cast<SensorGrouping>(d.sensor_grouping);
+    out.sensorGroups.assign(d.sensor_groups, d.sensor_groups + d.num_sensor_groups);
     out.validate(FieldNaming::CAbi);
     return out;
 }

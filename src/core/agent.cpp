@@ -280,11 +280,14 @@ std::uint32_t Agent::Impl::step(float reward, ObservationView obs, float dt, Act
     // room for one more RBF everywhere, then the RBF itself (strong on its own).
     const bool covered = s.rep.find(obs.discrete, s.normalized.data(), s.current, s.ahead);
     bool grows = !covered && s.learning && s.desc.allocation == RbfAllocation::Dynamic;
-    const bool overBudget = grows && s.rep.featureCount() >= s.desc.rbfBudget();
+    // One new RBF per group that has none within one width (one, for a single lattice).
+    const std::uint32_t missing = grows ? s.rep.missing() : 0u;
+    const bool overBudget = grows && std::uint64_t(s.rep.featureCount()) + missing > s.desc.rbfBudget();
     grows = grows && !overBudget;
-    s.reserveFor(s.rep.featureCount() + (grows ? 1u : 0u), s.current.size() + (grows ? 1u : 0u));
+    const std::uint32_t growth = grows ? missing : 0u;
+    s.reserveFor(s.rep.featureCount() + growth, s.current.size() + growth);
     if (grows) {
-        s.current.push_back(core::ActiveFeature{s.rep.add(obs.discrete, s.normalized.data()), 1.0f});
+        s.rep.addMissing(obs.discrete, s.normalized.data(), s.current);
         s.weights.resize(s.rep.featureCount());
     }
     // Nothing below allocates.

@@ -1,7 +1,9 @@
+#include <algorithm>
 #include <cmath>
 #include <string>
 
 #include "core/predictive_model.hpp"
+#include "core/sensor_groups.hpp"
 #include "verve/agent.hpp"
 
 namespace verve {
@@ -34,6 +36,8 @@ constexpr Field kDiscretePrediction{"discretePrediction", "discrete_prediction"}
 constexpr Field kMaxRbfs{"maxRbfs", "max_rbfs"};
 constexpr Field kPolicyWeightBound{"policyWeightBound", "policy_weight_bound"};
 constexpr Field kAdaptation{"adaptation", "adaptation"};
+constexpr Field kGrouping{"grouping", "sensor_grouping"};
+constexpr Field kSensorGroups{"sensorGroups", "sensor_groups"};
 
 class Validator {
 public:
@@ -67,11 +71,43 @@ std::uint64_t combinations(const AgentDescriptor& d) {
     return n;
 }
 
-// resolution^numContinuous RBFs per discrete combination, times the combinations (saturating).
+// resolution^(sensors in the group) RBFs per group and discrete combination, summed (saturating).
 std::uint64_t fullLatticeSize(const AgentDescriptor& d) {
-    std::uint64_t n = combinations(d);
-    for (std::size_t i = 0; i < d.continuousSensors.size() && n <= Limits::kMaxFullLattice; ++i) n *= d.resolution;
-    return n;
+    std::uint64_t total = 0;
+    for (auto group : core::sensorGroups(d)) {
+        std::uint64_t n = combinations(d);
+        for (auto bits = group; bits != 0 && n <= Limits::kMaxFullLattice; bits &= bits - 1) n *= d.resolution;
+        total += std::min(n, Limits::kMaxFullLattice + 1);
+        if (total > Limits::kMaxFullLattice) return Limits::kMaxFullLattice + 1;
+    }
+    return total;
+}
+
+void validateGroups(const AgentDescriptor& d, const Validator& v) {
+    v.require(d.grouping == SensorGrouping::Auto || d.grouping == SensorGrouping::Joint ||
+                  d.grouping == SensorGrouping::Custom,
+              v.name(kGrouping) + " must be Auto, Joint or Custom");
+    if (d.grouping != SensorGrouping::Custom) {
+        v.require(d.sensorGroups.empty(), v.name(kSensorGroups) + " is only read with Custom " + v.name(kGrouping));
+        return;
+    }
+    const std::size_t n = d.continuousSensors.size();
+    v.require(!d.sensorGroups.empty() || n == 0, "Custom " + v.name(kGrouping) + " needs at least one group in " +
+                                                     v.name(kSensorGroups));
+    v.requireAtMost(d.sensorGroups.size(), Limits::kMaxSensorGroups, "the number of " + v.name(kSensorGroups));
+    const std::uint64_t all = n >= 64 ? ~std::uint64_t(0) : (std::uint64_t(1) << n) - 1;
+    std::uint64_t covered = 0;
+    for (std::size_t i = 0; i < d.sensorGroups.size(); ++i) {
+        const std::uint64_t g = d.sensorGroups[i];
+        v.require(g != 0, v.name(kSensorGroups, i) + " is empty");
+        v.require((g & ~all) == 0, v.name(kSensorGroups, i) + " names a continuous sensor the agent does not have (bit " +
+                                       std::to_string(63 - __builtin_clzll(g)) + ")");
+        covered |= g;
+    }
+    if (covered != all) {
+        v.require(false, "continuous sensor " + std::to_string(__builtin_ctzll(all & ~covered)) + " is in none of " +
+                             v.name(kSensorGroups) + ": its readings would be ignored");
+    }
 }
 
 // Every size derived from several fields at once: each alone may be in range while their
@@ -81,8 +117,8 @@ void validateDerivedSizes(const AgentDescriptor& d, const Validator& v) {
               "the product of " + v.name(kDiscreteValues) + " (discrete value combinations) is above 2^53");
     if (d.allocation == RbfAllocation::Full) {
         v.require(fullLatticeSize(d) <= Limits::kMaxFullLattice,
-                  "full " + v.name(kAllocation) + " would create " + v.name(kResolution) + "^" +
-                      v.name(kContinuousSensors) + " RBFs per discrete value combination, more than " +
+                  "full " + v.name(kAllocation) + " would create " + v.name(kResolution) +
+                      "^(sensors in a group) RBFs per group and discrete value combination, more than " +
                       std::to_string(Limits::kMaxFullLattice) + " in all; use dynamic allocation");
         v.require(fullLatticeSize(d) <= d.rbfBudget(),
                   "full " + v.name(kAllocation) + " would create more RBFs than " + v.name(kMaxRbfs) + " allows");
@@ -141,6 +177,7 @@ void AgentDescriptor::validate(FieldNaming naming) const {
     v.require(std::isfinite(curiosityFactor) && curiosityFactor >= 0.0f,
               v.name(kCuriosityFactor) + " must be a finite number >= 0");
     v.requireAtMost(maxRbfs, Limits::kMaxRbfs, v.name(kMaxRbfs));
+    validateGroups(*this, v);
     validateDerivedSizes(*this, v);
 }
 

@@ -4,6 +4,7 @@
 #include <string>
 
 #include "core/agent_impl.hpp"
+#include "core/sensor_groups.hpp"
 
 namespace verve {
 namespace {
@@ -149,6 +150,11 @@ std::unique_ptr<Agent::Impl> restoreAgent(const AgentSnapshot& snap) {
 
 void snapshotBrain(const BrainState& brain, AgentSnapshot& snap) {
     snap.descriptor = brain.desc;
+    // A save keeps the groups it was made with, whatever a later library's Auto would choose.
+    if (brain.desc.grouping == SensorGrouping::Auto && brain.rep.groupCount() > 1) {
+        snap.descriptor.grouping = SensorGrouping::Custom;
+        snap.descriptor.sensorGroups = core::sensorGroups(brain.desc);
+    }
     brain.rep.features(snap.featureKeys, snap.centres);
     snap.stride = brain.weights.stride();
     snap.weights = brain.weights.data();

@@ -1,61 +1,21 @@
-// The RBF state representation (thesis chapter 4, "RBF State Representation").
-//
-// One RBF array per combination of discrete sensor values; within an array, Gaussian RBFs of width
-// sigma = 2 / resolution over the continuous sensors in [-1, 1]. With no continuous sensors an
-// array is a single feature that is fully active for its combination. RBFs are found through a
-// uniform grid of cells 4 sigma wide, so activating an observation touches only the cells around
-// it, never all RBFs ever made.
+// The RBF state representation (thesis chapter 4, "RBF State Representation"): one RBF lattice
+// over the continuous sensors (core/rbf_lattice.hpp), or, for many sensors, one lattice per group
+// of sensors whose features are summed (core/sensor_groups.hpp). The groups number their RBFs in
+// one sequence, so the learner sees one list of features either way.
 #pragma once
-#include <algorithm>
-#include <array>
 #include <cstdint>
-#include <unordered_map>
 #include <vector>
 
-#include "core/active_feature.hpp"
-#include "core/kernels.hpp"
-#include "core/weight_table.hpp"
-#include "verve/agent_descriptor.hpp"
+#include "core/rbf_lattice.hpp"
 
 namespace verve::core {
-
-// A lookup's scratch, and its measure of whether block boxes pay (StateRepresentation::find). A
-// representation keeps one for its own lookups; a batch that looks up the bodies of one brain on
-// several threads at once gives each worker its own (core/shared_step.hpp). Either way a lookup
-// finds the same features in the same order: the measure only chooses how cells are read.
-struct LookupScratch {
-    static constexpr std::uint32_t kMaxDims = DescriptorLimits::kMaxSensors;
-    std::uint32_t blocksTested = 0, blocksKept = 0;
-    std::uint32_t wholeLookupsLeft = 0;
-    std::array<std::int32_t, kMaxDims> coords{}, neighbour{}, offsets{};
-    std::array<std::int32_t, 3 * kMaxDims> candidates{};  // per dimension up to 3 distinct cell coordinates
-    std::array<std::uint8_t, kMaxDims> candidateCount{};
-    std::vector<std::uint64_t> visited;  // cell hashes already read this activation
-};
 
 class StateRepresentation {
 public:
     explicit StateRepresentation(const AgentDescriptor& desc);
 
-    // Active features of an observation whose continuous values are already in [-1, 1].
-    // With `allocate`, a new RBF is centred on the input when none lies within one width.
-    // Returns the number of features added (0 or 1).
-    std::uint32_t activate(const std::int32_t* discrete, const float* continuous, bool allocate,
-                           std::vector<ActiveFeature>& out);
-    // A new RBF centred on the observation; returns its index. Strong guarantee: if an
-    // allocation fails, it throws and the representation is as it was.
-    std::uint32_t add(const std::int32_t* discrete, const float* continuous);
-    // Room for lookups once there are `features` RBFs: find() then allocates nothing, given an
-    // output vector with foundCapacity(features) room (the scan writes whole lanes, then trims).
-    // A lookup visits at most 3^n cells, each once, and never more cells than RBFs.
-    void reserve(std::uint32_t features) { reserve(own_, features); }
-    // The same for a scratch of the caller's.
-    void reserve(LookupScratch& scratch, std::uint32_t features) const {
-        if (!exactCellKeys_) reserveRoom(scratch.visited,  // only hashed keys use it; the minimum fits in 32 bits
-                                         static_cast<std::size_t>(std::min<std::uint64_t>(features, maxNeighbours_)));
-    }
-    static std::size_t foundCapacity(std::uint32_t features) { return std::size_t(features) + kScanLanes; }
-    // The same without allocating; returns whether some RBF lies within one width.
+    // Active features of an observation whose continuous values are already in [-1, 1]; returns
+    // whether every group has an RBF within one width (the scratch records which have none).
     // `ahead`: a batch's next agent, asked for as the scan goes (prefetch.hpp).
     bool find(const std::int32_t* discrete, const float* continuous, std::vector<ActiveFeature>& out,
               PrefetchQueue* ahead = nullptr) const {
@@ -65,127 +25,67 @@ public:
     // scratches of their own may run at once on several threads (nothing else may change it then).
     bool find(const std::int32_t* discrete, const float* continuous, std::vector<ActiveFeature>& out,
               LookupScratch& scratch, PrefetchQueue* ahead = nullptr) const;
+    // How many RBFs the last find() on the representation's own scratch found missing (one per
+    // group without an RBF within one width), and adding them: each is centred on the
+    // observation and appended to `out` with activation 1. Strong guarantee: if an allocation
+    // fails, it throws and the representation is as it was. Returns the number added.
+    std::uint32_t missing() const { return static_cast<std::uint32_t>(__builtin_popcountll(own_.uncovered)); }
+    std::uint32_t addMissing(const std::int32_t* discrete, const float* continuous, std::vector<ActiveFeature>& out);
+    // find(), then with `allocate` addMissing(): returns the number of RBFs added.
+    std::uint32_t activate(const std::int32_t* discrete, const float* continuous, bool allocate,
+                           std::vector<ActiveFeature>& out);
+
+    // Room for lookups once there are `features` RBFs: find() then allocates nothing, given an
+    // output vector with foundCapacity(features) room.
+    void reserve(std::uint32_t features) { reserve(own_, features); }
+    void reserve(LookupScratch& scratch, std::uint32_t features) const {
+        for (const auto& g : groups_) g.lattice.reserve(scratch, features);
+    }
+    static std::size_t foundCapacity(std::uint32_t features) { return RbfLattice::foundCapacity(features); }
 
     std::uint32_t featureCount() const { return featureCount_; }
+    std::size_t groupCount() const { return groups_.size(); }
     std::uint32_t numContinuous() const { return numContinuous_; }
     const std::uint8_t* circular() const { return circular_.data(); }  // per continuous sensor: 1 when it wraps
-    std::uint64_t keyCount() const { return keyCount_; }
-    // Whether the next lookup reads cells whole rather than through their block boxes (judgeBoxes).
+    // Saved features' keys lie below this: group * (discrete combinations) + discrete key.
+    std::uint64_t keyCount() const { return keyCount_ * groups_.size(); }
     bool readsCellsWhole() const { return own_.wholeLookupsLeft > 0; }
-    // Every feature's discrete key and centre (numContinuous values), by feature index. Not for
-    // the hot path: the grid cells hold the only copy of a centre, so this walks all of them.
+    // Every feature's saved key and centre (numContinuous values; 0 for sensors outside its
+    // group), by feature index. Not for the hot path.
     void features(std::vector<std::uint64_t>& keys, std::vector<float>& centres) const;
-    // A batch's staged prefetch of the next lookup (Agent::Impl::prefetch), for a representation
-    // of one array of one cell (every dynamic agent below resolution 16 without discrete sensors):
-    // stage 0 asks for the array, 1 for its cell, 2 for the cell's centres; each stage reads only
-    // what the one before asked for. Other representations ask for nothing.
-    static constexpr unsigned kPrefetchStages = 3;
-    void prefetchLookup(unsigned stage) const noexcept;
-    // The same batch's PrefetchQueue: the centres of such a representation's cell.
-    void addArraysTo(PrefetchQueue& q) const noexcept;
-
-    // Divides the learning rates: the expected activation sum of a lattice of RBFs,
-    // sqrt(2 pi) ~ 2.5 per continuous dimension, and 1 when all sensors are discrete.
+    // A batch's staged prefetch of the next lookup (RbfLattice::prefetchLookup), for one lattice.
+    static constexpr unsigned kPrefetchStages = RbfLattice::kPrefetchStages;
+    void prefetchLookup(unsigned stage) const noexcept {
+        if (groups_.size() == 1) groups_[0].lattice.prefetchLookup(stage);
+    }
+    void addArraysTo(PrefetchQueue& q) const noexcept {
+        if (groups_.size() == 1) groups_[0].lattice.addArraysTo(q);
+    }
+    // Divides the learning rates: the expected activation sum, summed over the groups.
     float activationSum() const { return activationSum_; }
 
-    // Restores a saved feature (centre has numContinuous values, already validated).
-    std::uint32_t addFeature(std::uint64_t key, const float* centre);
-    // Once a full lattice is complete (made, or restored from a save): puts each cell's RBFs in
-    // Morton order of their lattice indices and drops spare capacity. No RBF may be added after.
+    // Restores a saved feature (a key below keyCount(), a centre of numContinuous values, both
+    // validated) as the next feature.
+    void addFeature(std::uint64_t key, const float* centre);
+    // Once full lattices are complete (made, or restored from a save): RbfLattice::finishLattice.
     void finishLattice();
 
 private:
-    // A cell keeps copies of its RBFs' centres next to their indices, in blocks of kScanLanes RBFs
-    // stored dimension by dimension ([block][dimension][lane]): the distance loop then runs
-    // across kScanLanes RBFs at once in SIMD registers.
-    // A cell also keeps the bounding box of its centres, and one per block: a cell or a block
-    // whose box lies beyond the cutoff is skipped unread (in 4-D most of the 3^4 neighbour cells'
-    // RBFs are out of reach). A full lattice is stored in Morton order within each cell, so that
-    // a block is a small box (2x2x2x1 lattice points in 4-D) and the blocks read are mostly kept.
-    struct Cell {
-        std::vector<std::uint32_t> features;
-        // Set while features[i] == firstFeature + i (a dynamic agent with one array and one cell
-        // numbers its RBFs in the order they were made): the scan then counts the indices instead
-        // of reading them, 4 bytes per RBF of memory traffic fewer.
-        bool consecutive = true;
-        std::uint32_t firstFeature = 0;
-        std::vector<float> centres;      // blocks of numContinuous_ * kScanLanes floats
-        std::vector<float> bounds;       // per dimension: lowest, highest centre
-        std::vector<float> blockBounds;  // the same per block, in groups of kScanLanes blocks (Kernels::boxesWithin)
+    struct Group {
+        std::vector<std::uint32_t> sensors;  // continuous sensor indices, lowest first
+        bool all = false;                    // every continuous sensor in order: no gather needed
+        RbfLattice lattice;
     };
-    struct Array {
-        std::unordered_map<std::uint64_t, Cell> cells;
-    };
+    // The group's sensor values of an observation: the observation itself when the group holds
+    // every sensor, else gathered into `buffer`.
+    const float* point(const Group& g, const float* continuous, float* buffer) const;
 
-    // Appends the RBFs of one cell within the cutoff; returns whether one lies within a width.
-    // Without `boxes`, a cell is read whole, never through its block boxes (same result). An array's
-    // only cell (`alone`) skips the test of its own box: it holds every RBF the agent made along
-    // its way, so the test nearly always passes, and its bounds would be one more cache miss.
-    bool scanCell(const Cell& c, const ScanParams& params, bool boxes, bool alone, std::vector<ActiveFeature>& out,
-                  LookupScratch& scratch) const;
-    // After a lookup that tested block boxes: once enough blocks were tested, and nearly all of
-    // them passed, the next kWholeLookups lookups read their cells whole (the scratch's counters).
-    void judgeBoxes(LookupScratch& scratch) const;
-    // Squared distance from a point to a bounding box (per dimension: lowest, highest), the
-    // shorter way on circular sensors; and the same to the box's farthest corner.
-    float boxDistance2(const float* bounds, const float* point) const;
-    float farthestDistance2(const float* bounds, const float* point) const;
-    // A cell of up to 16 blocks is always read whole, and keeps no block boxes: testing them
-    // would cost about what it saves.
-    static constexpr std::size_t kReadWhole = 16 * kScanLanes;
-    static std::size_t groupsFor(std::size_t rbfs) { return (rbfs + kScanLanes * kScanLanes - 1) / (kScanLanes * kScanLanes); }
-    std::size_t boundsGroupFloats() const { return std::size_t(numContinuous_) * 2 * kScanLanes; }
-    // Widens a box (lowest of dimension d at lo[d * step], highest at lo[d * step + hiOffset]) to
-    // a centre (dimension d at centre[d * centreStep]).
-    void updateBounds(float* lo, std::size_t hiOffset, std::size_t step, const float* centre, std::size_t centreStep,
-                      bool first) const;
-    void updateBlockBounds(Cell& c, std::size_t rbf) const;  // to the cell's RBF number rbf
-    void rebuildBlockBounds(Cell& c) const;
-    std::uint64_t discreteKey(const std::int32_t* discrete) const;
-    // The array of a representation without discrete sensors, and its cell when it has one only
-    // (what the batch's prefetches follow); null otherwise.
-    const Array* onlyArray() const noexcept;
-    const Cell* onlyCell() const noexcept;
-    void cellCoords(const float* point, std::int32_t* coords) const;
-    // Fills the scratch's candidates (up to 3 distinct cell coordinates per dimension around the
-    // point) and resets its odometer offsets; returns the number of neighbour cells.
-    std::size_t neighbourCandidates(const float* point, LookupScratch& scratch) const;
-    std::uint64_t cellHash(const std::int32_t* coords) const;
-    void allocateFullLattice();
-
-    std::vector<std::uint32_t> discreteCounts_;
-    // Per continuous sensor, 1 when -1 and 1 meet. Inline (kMaxSensors), like the neighbour
-    // scratch below: small blocks of their own would each be a cache miss of a crowd's update.
-    static constexpr std::uint32_t kMaxDims = LookupScratch::kMaxDims;
-    std::array<std::uint8_t, kMaxDims> circular_{};
-    std::uint32_t numContinuous_;
-    std::uint32_t resolution_;
-    float sigma_;
-    std::int32_t cellsPerDim_;
-    float cellSize_;
-    std::uint64_t maxNeighbours_;  // 3^numContinuous, saturated
-    bool exactCellKeys_ = false;   // a cell's key is its coordinates (else a hash that may collide)
-    std::uint64_t keyCount_;
-    float activationSum_;
-    const Kernels* kernels_;  // chosen for this CPU (kernels.hpp)
-
-    std::unordered_map<std::uint64_t, Array> arrays_;
+    std::vector<Group> groups_;
+    std::array<std::uint8_t, LookupScratch::kMaxDims> circular_{};
+    std::uint32_t numContinuous_ = 0;
+    std::uint64_t keyCount_ = 1;  // discrete combinations
     std::uint32_t featureCount_ = 0;
-
-    // Whether block boxes pay, measured on the lookups themselves. Reading a block's box costs
-    // 2 floats per dimension, reading the block (dims + 1) * kScanLanes: the boxes save bytes only
-    // when they skip more than dims / (4 (dims + 1)) of the blocks tested (a fifth in 4-D), and
-    // compute only when they skip more. Where the RBFs lie along the paths an agent took (a
-    // dynamic agent, e.g. the cart-pole shape's 676 RBFs in one cell) nearly every block passes,
-    // and reading the boxes is a quarter more memory traffic for nothing; in a dense lattice
-    // most blocks are skipped. Cells are then read whole for kWholeLookups lookups, then the
-    // boxes are measured again. Either way a lookup finds the same features, in the same order.
-    static constexpr std::uint32_t kJudgeBlocks = 256;   // blocks tested before a verdict
-    static constexpr std::uint32_t kWholeLookups = 128;   // lookups read whole after a verdict
-
-    // The scratch of the representation's own lookups (no allocation once warmed up). Mutable:
-    // lookups are logically const, and one agent is used by one thread at a time. Last: a lookup
-    // in an array of one cell reads none of it, and the members above then share fewer cache lines.
+    float activationSum_ = 0.0f;
     mutable LookupScratch own_;
 };
 

@@ -10,6 +10,7 @@
 #include <cstdint>
 #include <type_traits>
 
+#include "io/snapshot_check.hpp"
 #include "verve/agent_snapshot.hpp"
 
 namespace verve::io {
@@ -70,6 +71,12 @@ void transferPayload(Io& io, Snapshot& s, Flag& shortTerm, std::uint32_t version
         io.value("td_mean_square", s.tdMeanSquare);
     } else if constexpr (!std::is_const_v<Snapshot>) {
         s.descriptor.adaptation = 0;  // an older save keeps every setting as given
+    }
+    if (version >= 6) {
+        io.choice("grouping", s.descriptor.grouping, SensorGrouping::Custom);
+        io.list("sensor_groups", s.descriptor.sensorGroups);
+    } else if constexpr (!std::is_const_v<Snapshot>) {
+        s.descriptor.grouping = legacyGrouping(s.descriptor);
     }
     io.flag("short_term_memory", shortTerm);
     if (!shortTerm) return;

@@ -5,6 +5,7 @@
 #include <string>
 
 #include "core/horizon.hpp"
+#include "core/sensor_groups.hpp"
 #include "verve/error.hpp"
 
 namespace verve::io {
@@ -69,11 +70,14 @@ void checkFeatures(const AgentSnapshot& s) {
         fail("the save holds " + std::to_string(features) + " RBFs, more than its max_rbfs allows (" +
              std::to_string(s.descriptor.rbfBudget()) + ")");
     }
+    // A feature's key: its group times the discrete combinations, plus its combination.
     const std::uint64_t combos = discreteCombinations(s.descriptor);
+    const std::uint64_t keys = combos * core::sensorGroups(s.descriptor).size();  // <= 2^53 * 64
     for (std::size_t i = 0; i < features; ++i) {
-        if (s.featureKeys[i] >= combos) {
+        if (s.featureKeys[i] >= keys) {
             fail("featureKeys[" + std::to_string(i) + "] = " + std::to_string(s.featureKeys[i]) +
-                 " is out of range (the descriptor has " + std::to_string(combos) + " discrete combinations)");
+                 " is out of range (the descriptor has " + std::to_string(combos) +
+                 " discrete combinations in each of its sensor groups)");
         }
     }
     requireSize("centres", s.centres.size(), features * nc, "features x continuous sensors");
@@ -149,6 +153,10 @@ void checkSnapshot(const AgentSnapshot& s) {
     if (s.horizonTrials > core::AdaptiveHorizon::kTrialWindow) fail("horizonTrials is above " + std::to_string(core::AdaptiveHorizon::kTrialWindow));
     if (!(std::isfinite(s.trialSeconds) && s.trialSeconds >= 0.0f)) fail("trialSeconds is not a finite number >= 0");
     if (!(std::isfinite(s.tdMeanSquare) && s.tdMeanSquare >= 0.0f)) fail("tdMeanSquare is not a finite number >= 0");
+}
+
+SensorGrouping legacyGrouping(const AgentDescriptor& d) {
+    return d.continuousSensors.size() > core::kJointLatticeSensors ? SensorGrouping::Joint : SensorGrouping::Auto;
 }
 
 }  // namespace verve::io

@@ -9,4 +9,8 @@ namespace verve::io {
 // Throws Error(Format) naming the first inconsistent field.
 void checkSnapshot(const AgentSnapshot& snapshot);
 
+// The grouping of a save made before sensor groups: one lattice over all continuous sensors, which
+// Auto still is up to 4 of them.
+SensorGrouping legacyGrouping(const AgentDescriptor& d);
+
 }  // namespace verve::io

@@ -119,6 +119,15 @@ AgentDescriptor readDescriptor(pugi::xml_node root) {
     if (n.attribute("max_rbfs")) d.maxRbfs = readUint64(n, "max_rbfs");
     for (pugi::xml_node s : n.children("discrete_sensor")) d.discreteSensors.push_back(readUint32(s, "values"));
     for (pugi::xml_node s : n.children("continuous_sensor")) d.continuousSensors.push_back({readBool(s, "circular")});
+    if (n.attribute("grouping")) {
+        const std::string_view grouping = attributeText(n, "grouping");
+        if (grouping == "joint") d.grouping = SensorGrouping::Joint;
+        else if (grouping == "custom") d.grouping = SensorGrouping::Custom;
+        else failAttribute(n, "grouping", grouping, "joint or custom");
+    } else {
+        d.grouping = legacyGrouping(d);
+    }
+    for (pugi::xml_node s : n.children("sensor_group")) d.sensorGroups.push_back(readUint64(s, "sensors"));
     return d;
 }
 

@@ -88,6 +88,11 @@ void writeDescriptor(pugi::xml_node root, const AgentDescriptor& d) {
         .set_value(d.discretePrediction == DiscretePrediction::Ordinal ? "ordinal" : "categorical");
     for (auto values : d.discreteSensors) setNumber(n.append_child("discrete_sensor"), "values", std::uint64_t{values});
     for (const auto& c : d.continuousSensors) n.append_child("continuous_sensor").append_attribute("circular").set_value(c.circular);
+    // Written only when not Auto, so saves of agents without groups stay readable by older libraries.
+    if (d.grouping != SensorGrouping::Auto) {
+        n.append_attribute("grouping").set_value(d.grouping == SensorGrouping::Joint ? "joint" : "custom");
+    }
+    for (auto g : d.sensorGroups) setNumber(n.append_child("sensor_group"), "sensors", g);
 }
 
 void writeState(pugi::xml_node root, const AgentSnapshot& s) {
@@ -148,7 +153,8 @@ std::string snapshotToXml(const AgentSnapshot& snapshot, bool includeTraces) {
     }
     pugi::xml_document doc;
     pugi::xml_node root = doc.append_child(kRootElement);
-    setNumber(root, "format_version", std::uint64_t{AgentSnapshot::kFormatVersion});
+    // Version 1 unless the save has sensor groups, which an older library must refuse.
+    setNumber(root, "format_version", std::uint64_t{snapshot.descriptor.sensorGroups.empty() ? 1u : AgentSnapshot::kFormatVersion});
     writeDescriptor(root, snapshot.descriptor);
     writeState(root, snapshot);
     writeFeatures(root, snapshot);

@@ -82,7 +82,8 @@ TEST(BinarySave, RoundTripIsExactForEveryKindOfAgent) {
     discreteOnly.seed = 0xFFFFFFFFFFFFFFFFULL;
     AgentDescriptor bandit;  // no sensors: one state
     bandit.numActions = 10;
-    for (const AgentDescriptor& d : {iotest::mixedDescriptor(), discreteOnly, bandit, iotest::plannerDescriptor()}) {
+    for (const AgentDescriptor& d : {iotest::mixedDescriptor(), discreteOnly, bandit, iotest::plannerDescriptor(),
+                                     iotest::groupedDescriptor(), iotest::customGroupsDescriptor()}) {
         Agent agent = trainedAgent(d, 410);  // 410: stops mid-trial, with traces and a previous step
         const std::string bytes = binarySave(agent);
         Agent loaded = loadAgentFromMemory(bytes.data(), bytes.size());
@@ -178,10 +179,12 @@ std::string asVersion(std::string bytes, const AgentSnapshot& snap, std::uint32_
     std::memcpy(tail + 17, &snap.finalRewardHigh, 4);
     const std::size_t at = bytes.find(std::string(tail, 21), io::kBinaryHeaderBytes);
     if (at == std::string::npos) return {};
-    // Version 5's 16 bytes after the final reward range, and the trial's seconds after the
-    // short-term memory flag that follows them.
-    if (bytes[at + 37] == 1) bytes.erase(at + 38, 4);
-    bytes.erase(at + 21, 16);
+    // After the final reward range: version 5's 16 bytes, version 6's 9 (the grouping and a list
+    // of groups, empty for these agents), then the short-term memory flag and, from version 5,
+    // the trial's seconds.
+    if (version < 5 && bytes[at + 46] == 1) bytes.erase(at + 47, 4);
+    bytes.erase(at + 37, 9);
+    if (version < 5) bytes.erase(at + 21, 16);
     if (version == 1) bytes.erase(at + 4, 17);
     if (version == 2) bytes.erase(at + 12, 9);
     if (version == 3) bytes.erase(at + 13, 8);
@@ -216,6 +219,21 @@ TEST(BinarySave, Version1SavesLoadWithTheWidestRewardRange) {
 
 // A save from before final rewards were counted apart reads [0, 0] for them: its reward range holds
 // every reward it learned from, so its value bounds stay as wide as they were.
+TEST(BinarySave, Version5SavesOfManySensorsKeepTheirOneLattice) {
+    // Before sensor groups, an agent of 6 continuous sensors had one lattice over all of them:
+    // it must load so, not with what Auto now chooses for 6 sensors.
+    AgentDescriptor d = iotest::groupedDescriptor();
+    d.grouping = SensorGrouping::Joint;
+    d.maxRbfs = 100000;
+    Agent agent = trainedAgent(d, 410);
+    AgentSnapshot snap = agent.snapshot();
+    const std::string bytes = asVersion(binarySave(agent), snap, 5);
+    ASSERT_FALSE(bytes.empty());
+    const AgentSnapshot loaded = loadAgentFromMemory(bytes.data(), bytes.size()).snapshot();
+    EXPECT_EQ(loaded.descriptor.grouping, SensorGrouping::Joint);
+    expectSameSnapshot(snap, loaded);
+}
+
 TEST(BinarySave, Version3SavesReadNoFinalRewardRange) {
     Agent agent = trainedAgent(iotest::plannerDescriptor(), 410);
     AgentSnapshot snap = agent.snapshot();

@@ -38,6 +38,24 @@ inline AgentDescriptor plannerDescriptor() {
     return d;
 }
 
+// Six continuous sensors: Auto gives each a lattice and each neighbouring pair one (11 groups).
+inline AgentDescriptor groupedDescriptor() {
+    AgentDescriptor d = mixedDescriptor();
+    for (int i = 0; i < 4; ++i) d.addContinuousSensor(i == 2);
+    return d;
+}
+
+// Custom groups over full lattices: sensor 0 with 2, and 1 alone.
+inline AgentDescriptor customGroupsDescriptor() {
+    AgentDescriptor d = mixedDescriptor();
+    d.addContinuousSensor(false);
+    d.resolution = 5;
+    d.allocation = RbfAllocation::Full;
+    d.grouping = SensorGrouping::Custom;
+    d.sensorGroups = {0b101, 0b010};
+    return d;
+}
+
 // A deterministic stream of observations and rewards, the same for every agent that replays it.
 class Feed {
 public:
@@ -117,6 +135,8 @@ inline void expectSameDescriptor(const AgentDescriptor& a, const AgentDescriptor
     EXPECT_EQ(a.discretePrediction, b.discretePrediction);
     EXPECT_EQ(a.maxRbfs, b.maxRbfs);
     EXPECT_EQ(a.adaptation, b.adaptation);
+    EXPECT_EQ(a.grouping, b.grouping);
+    EXPECT_EQ(a.sensorGroups, b.sensorGroups);
 }
 
 // Every field, floats compared bit for bit.

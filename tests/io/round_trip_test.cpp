@@ -42,6 +42,23 @@ TEST(RoundTrip, MixedSensorsMidTrialFromMemory) {
     expectSameFuture(agent, loaded);
 }
 
+TEST(RoundTrip, SensorGroupsKeepTheirLatticesAndAreSavedAsTheyWereMade) {
+    for (const AgentDescriptor& d : {iotest::groupedDescriptor(), iotest::customGroupsDescriptor()}) {
+        Agent agent = trainedAgent(d, 410);
+        const std::string xml = saveAgentToString(agent);
+        EXPECT_NE(xml.find("format_version=\"2\""), std::string::npos);  // older libraries refuse it
+        EXPECT_NE(xml.find("grouping=\"custom\""), std::string::npos);   // Auto's choice, written out
+        Agent loaded = loadAgentFromMemory(xml.data(), xml.size());
+        expectSameSnapshot(agent.snapshot(), loaded.snapshot());
+        EXPECT_EQ(saveAgentToString(loaded), xml);
+        expectSameFuture(agent, loaded);
+    }
+    // An agent of a few sensors writes nothing new: older libraries still read its saves.
+    const std::string plain = saveAgentToString(trainedAgent(iotest::mixedDescriptor(), 50));
+    EXPECT_NE(plain.find("format_version=\"1\""), std::string::npos);
+    EXPECT_EQ(plain.find("grouping"), std::string::npos);
+}
+
 TEST(RoundTrip, ThroughAFile) {
     const auto path = std::filesystem::temp_directory_path() / "verve_round_trip_test.xml";
     Agent agent = trainedAgent(iotest::mixedDescriptor(11));
