@@ -82,6 +82,8 @@ in_doc docs/scenes.md 'build/samples/runner/verve-demo run pendulum --runs 10 --
 in_doc docs/scenes.md 'build/samples/runner/verve-demo run cart-pole --seed 1 --out out'
 doc docs/scenes.md 'build/samples/runner/verve-demo compare-brains --seeds 5 --out out' \
   'build/samples/runner/verve-demo compare-brains --seeds 1 --minutes 1 --out out'
+doc docs/scenes.md 'build/samples/runner/verve-demo ray-npc --seeds 1-5 --minutes 20 --out out' \
+  'build/samples/runner/verve-demo ray-npc --seeds 1 --minutes 1 --out out'
 doc docs/crowds.md 'build/samples/runner/verve-demo compare-brains --seeds 5 --minutes 10 --out out' \
   'build/samples/runner/verve-demo compare-brains --seeds 1 --minutes 1 --out out'
 

@@ -12,6 +12,7 @@
 #include "catalog.hpp"
 #include "learning_run.hpp"
 #include "plots.hpp"
+#include "ray_npc_run.hpp"
 #include "scene_registry.hpp"
 #include "tasks/settings.hpp"
 #include "verve/error.hpp"
@@ -72,6 +73,8 @@ void listAll() {
         if (r.kind == "scene") std::printf("  %-34s %s (default %u trials)\n", r.name.c_str(), r.description.c_str(), r.trials);
     std::printf("  %-34s %s\n", scenes::kNpcArenaName,
                 "learning NPCs: capsules seek food and avoid a hazard, one agent each (trials = simulated minutes)");
+    std::printf("  %-34s %s\n", "ray-npc (its own command)",
+                "raycast NPCs in a cluttered arena, learning at defaults vs scripted steering (verve-demo ray-npc)");
     std::printf("Thesis tasks:\n");
     for (const Runnable& r : catalog())
         if (r.kind == "task") std::printf("  %-34s %s (default %u trials)\n", r.name.c_str(), r.description.c_str(), r.trials);
@@ -218,6 +221,17 @@ int main(int argc, char** argv) {
     compare->add_option("--minutes", comparison.minutes, "simulated minutes per run")->check(CLI::Range(1u, 1000u));
     compare->add_option("--npcs", comparison.npcs, "NPCs in the arena")->check(CLI::Range(1u, 64u));
     compare->add_option("--out", comparison.out, "output directory");
+    CLI::App* rays = app.add_subcommand(
+        "ray-npc", "raycast NPCs: agents learning at library defaults vs scripted steering, per simulated minute");
+    RayNpcComparison rayNpcs;
+    std::string raySeeds = "1-5";
+    rays->add_option("--seeds", raySeeds, "seeds: N (1..N), A-B or a list A,B,C");
+    rays->add_option("--minutes", rayNpcs.minutes, "simulated minutes per run")->check(CLI::Range(1u, 1000u));
+    rays->add_option("--npcs", rayNpcs.npcs, "NPCs in the arena")->check(CLI::Range(1u, 64u));
+    rays->add_option("--rays", rayNpcs.rays, "rays per NPC (8-16; sensors beyond 16 need a library that takes them)")
+        ->check(CLI::Range(8u, 16u));
+    rays->add_flag("--shared-brain", rayNpcs.sharedBrain, "all NPCs are bodies of one shared brain");
+    rays->add_option("--out", rayNpcs.out, "output directory");
     run->add_flag("--defaults", agent.libraryDefaults,
                   "every learning setting at the library's default: only the scene's sensors, actions and features");
     run->add_option("--set", agent.settings, "a setting by its C ABI name, e.g. tau_discount=2 (after --defaults)");
@@ -237,6 +251,10 @@ int main(int argc, char** argv) {
             return 0;
         }
         if (*compare) return compareBrains(comparison);
+        if (*rays) {
+            rayNpcs.seeds = parseSeeds(raySeeds);
+            return compareRayNpcs(rayNpcs);
+        }
         return runCommand(flags, agent);
     } catch (const verve::Error& e) {
         std::fprintf(stderr, "verve-demo: %s\n", e.what());
