@@ -29,7 +29,7 @@ window_mean() {  # csv column first last
     END { if (n) printf "%.3f", s / n; else printf "n/a" }' "$1"
 }
 
-printf '%-34s %-9s %12s %12s   %s\n' task metric defaults "thesis/best" "anchor (what the task's own settings aim at)"
+printf '%-38s %-9s %12s %12s   %s\n' task metric defaults "thesis/best" "anchor (what the task's own settings aim at)"
 # task  runs  trials  metric-column  window-first  window-last  anchor
 while read -r task runs trials column first last anchor; do
   [ -z "$task" ] || [ "${task:0:1}" = "#" ] && continue
@@ -42,7 +42,7 @@ while read -r task runs trials column first last anchor; do
     t=$(window_mean "$tmp" "$column" "$first" "$last")
   fi
   rm -f "$tmp"
-  printf '%-34s %-9s %12s %12s   %s\n' "$task" "$column" "$d" "$t" "${anchor//_/ }"
+  printf '%-38s %-9s %12s %12s   %s\n' "$task" "$column" "$d" "$t" "${anchor//_/ }"
 done <<'TASKS'
 bandit                            200  1000  reward   900  1000  best_lever_~1.55
 sequential-actions                 40   700  success  630   700  100%_correct_late_in_each_block
@@ -54,6 +54,9 @@ hot-plate-2d                       50   301  steps    271   301  optimal_~2.8
 hot-plate-2d-continuous            50   301  steps    271   301  optimal_~2.8
 signaled-hot-plate-2d              30  1601  steps   1441  1601  optimal_~9.5
 signaled-hot-plate-2d-continuous   30  1601  steps   1441  1601  optimal_~9.5
+signaled-hot-plate-1d-2-distractors   20   301  steps    271   301  optimal_~9.5_(4_sensors:_one_lattice)
+signaled-hot-plate-1d-6-distractors   20   301  steps    271   301  optimal_~9.5_(8_sensors:_groups)
+signaled-hot-plate-1d-14-distractors  20   301  steps    271   301  optimal_~9.5_(16_sensors:_groups)
 maze1                              20   100  steps     90   100  optimal_22
 maze1-continuous                   20   100  steps     90   100  optimal_22
 maze2                              10    51  steps     46    51  optimal_25

@@ -3,6 +3,7 @@
 #include "tasks/bandit.hpp"
 #include "tasks/corridor.hpp"
 #include "tasks/cue_change.hpp"
+#include "tasks/distractors.hpp"
 #include "tasks/curiosity_grid.hpp"
 #include "tasks/hot_plate.hpp"
 #include "tasks/maze.hpp"
@@ -27,6 +28,10 @@ TaskFactory maze(MazeLayout (*layout)(), Sensors sensors, bool planning) {
         }
         return task;
     };
+}
+
+TaskFactory distractors(std::uint32_t count) {
+    return [=](std::uint64_t) { return std::make_unique<HotPlateAmongDistractors>(count); };
 }
 
 TaskFactory curiosityGrid(CuriosityAgent agent) {
@@ -57,6 +62,13 @@ std::vector<TaskInfo> makeRegistry() {
          hotPlate(2, true, D), 300, 1601, Metric::Steps},
         {"signaled-hot-plate-2d-continuous", "2D signaled hot plate, continuous position (resolution 25)",
          hotPlate(2, true, C), 300, 1601, Metric::Steps},
+        // Many sensors: the signal must be read with the position among 2, 6 or 14 wandering ones.
+        {"signaled-hot-plate-1d-2-distractors", "1D signaled hot plate, position + continuous signal + 2 distractors",
+         distractors(2), 100, 301, Metric::Steps},
+        {"signaled-hot-plate-1d-6-distractors", "1D signaled hot plate, position + continuous signal + 6 distractors",
+         distractors(6), 100, 301, Metric::Steps},
+        {"signaled-hot-plate-1d-14-distractors", "1D signaled hot plate, position + continuous signal + 14 distractors",
+         distractors(14), 100, 301, Metric::Steps},
         {"maze1", "2D maze #1 (shortest path 22), discrete position", maze(maze1Layout, D, false), 50, 100,
          Metric::Steps},
         {"maze1-continuous", "2D maze #1, continuous position (resolution 15)", maze(maze1Layout, C, false), 50, 100,

@@ -9,6 +9,8 @@ AgentDescriptor atLibraryDefaults(const AgentDescriptor& task) {
     AgentDescriptor d;
     d.discreteSensors = task.discreteSensors;
     d.continuousSensors = task.continuousSensors;
+    d.grouping = task.grouping;  // which sensors belong together describes the sensors
+    d.sensorGroups = task.sensorGroups;
     d.numActions = task.numActions;
     d.seed = task.seed;
     d.planning = task.planning;
@@ -42,6 +44,8 @@ void applySetting(AgentDescriptor& d, const std::string& setting) {
         d.planning = v != 0.0;
     } else if (key == "adaptation") {
         d.adaptation = static_cast<std::uint32_t>(v);
+    } else if (key == "sensor_grouping" && (v == 0.0 || v == 1.0)) {  // auto or joint; custom needs a list
+        d.grouping = static_cast<SensorGrouping>(static_cast<int>(v));
     } else if (key == "max_planning_steps") {
         d.maxPlanningSteps = static_cast<std::uint32_t>(v);
     } else {
