@@ -412,6 +412,64 @@ TEST_F(CApi, SampleValues) {
 
 // ---- descriptors and struct_size ----------------------------------------------------------
 
+TEST(CApiDesc, SensorGroupsReachTheAgentAndAreValidated) {
+    verve_agent_desc d = smallDesc();
+    EXPECT_EQ(d.sensor_grouping, uint32_t{VERVE_GROUPING_AUTO});
+    EXPECT_EQ(d.num_sensor_groups, 0u);
+    d.num_continuous_sensors = 3;
+    d.sensor_grouping = VERVE_GROUPING_CUSTOM;
+    d.num_sensor_groups = 2;
+    d.sensor_groups[0] = 0b011;
+    d.sensor_groups[1] = 0b100;
+    verve_agent* agent = nullptr;
+    ASSERT_EQ(verve_agent_create(&d, &agent), VERVE_OK) << verve_last_error();
+    verve_agent_desc back;
+    verve_agent_desc_default(&back);
+    ASSERT_EQ(verve_agent_get_desc(agent, &back), VERVE_OK);
+    EXPECT_EQ(back.sensor_grouping, uint32_t{VERVE_GROUPING_CUSTOM});
+    ASSERT_EQ(back.num_sensor_groups, 2u);
+    EXPECT_EQ(back.sensor_groups[0], 0b011u);
+    EXPECT_EQ(back.sensor_groups[1], 0b100u);
+    const float obs[] = {0.2f, -0.4f, 0.9f};
+    const int32_t disc[] = {1};
+    uint32_t action = 0;
+    ASSERT_EQ(verve_agent_update(agent, 0.0f, disc, 1, obs, 3, 0.1f, &action), VERVE_OK) << verve_last_error();
+    verve_agent_stats stats;
+    stats.struct_size = sizeof stats;
+    ASSERT_EQ(verve_agent_get_stats(agent, &stats), VERVE_OK);
+    EXPECT_EQ(stats.rbf_count, 2u);  // one RBF in each group
+    verve_agent_destroy(agent);
+
+    struct Bad {
+        uint32_t grouping, count;
+        uint64_t first;
+        const char* says;
+    };
+    for (const Bad& bad : {Bad{3, 0, 0, "sensor_grouping must be"}, Bad{VERVE_GROUPING_CUSTOM, 65, 0b111, "num_sensor_groups is 65"},
+                           Bad{VERVE_GROUPING_CUSTOM, 1, 0b011, "continuous sensor 2 is in none of sensor_groups"},
+                           Bad{VERVE_GROUPING_CUSTOM, 1, 0b1000, "sensor_groups[0] names a continuous sensor"},
+                           Bad{VERVE_GROUPING_AUTO, 1, 0b111, "sensor_groups is only read with Custom sensor_grouping"}}) {
+        d.sensor_grouping = bad.grouping;
+        d.num_sensor_groups = bad.count;
+        d.sensor_groups[0] = bad.first;
+        agent = nullptr;
+        EXPECT_EQ(verve_agent_create(&d, &agent), VERVE_ERROR_INVALID_ARGUMENT) << bad.says;
+        EXPECT_EQ(agent, nullptr);
+        EXPECT_NE(lastError().find(bad.says), std::string::npos) << lastError();
+    }
+    // A V4 host's struct ends before the fields: Auto, whatever lies beyond.
+    unsigned char memory[sizeof(verve_agent_desc)];
+    std::memset(memory, 0xAB, sizeof memory);
+    verve_agent_desc* v4 = reinterpret_cast<verve_agent_desc*>(memory);
+    ASSERT_EQ(verve_agent_desc_init(v4, VERVE_AGENT_DESC_SIZE_V4), VERVE_OK);
+    v4->num_continuous_sensors = 8;
+    ASSERT_EQ(verve_agent_create(v4, &agent), VERVE_OK) << verve_last_error();
+    ASSERT_EQ(verve_agent_get_desc(agent, &back), VERVE_OK);
+    EXPECT_EQ(back.sensor_grouping, uint32_t{VERVE_GROUPING_AUTO});
+    EXPECT_EQ(back.num_sensor_groups, 0u);
+    verve_agent_destroy(agent);
+}
+
 TEST(CApiDesc, DefaultsMatchTheDocumentedOnes) {
     verve_agent_desc d;
     verve_agent_desc_default(&d);
