@@ -86,6 +86,17 @@ inline verve_agent_desc anyDescriptor(FuzzedDataProvider& in) {
     // Any adaptation bits, now and then unknown ones (which must be refused).
     d.adaptation = in.ConsumeIntegralInRange<int>(0, 31) == 0 ? in.ConsumeIntegral<uint64_t>()
                                                               : in.ConsumeIntegralInRange<uint64_t>(0, VERVE_ADAPT_ALL);
+    // Sensor groups: now and then more than 4 continuous sensors (Auto's groups), custom groups
+    // that mostly name the agent's sensors, and now and then bad values (which must be refused).
+    if (in.ConsumeIntegralInRange<int>(0, 7) == 0) d.num_continuous_sensors = in.ConsumeIntegralInRange<uint32_t>(5, 8);
+    d.sensor_grouping = in.ConsumeIntegralInRange<uint32_t>(0, 3);
+    d.num_sensor_groups = in.ConsumeIntegralInRange<int>(0, 31) == 0 ? anyCount(in, 70)
+                          : d.sensor_grouping == VERVE_GROUPING_CUSTOM ? in.ConsumeIntegralInRange<uint32_t>(0, 4) : 0;
+    const uint64_t sensors = d.num_continuous_sensors < 64 ? (uint64_t{1} << d.num_continuous_sensors) - 1 : ~uint64_t{0};
+    for (uint32_t i = 0; i < VERVE_MAX_SENSOR_GROUPS; ++i) {
+        const uint64_t g = in.ConsumeIntegral<uint64_t>();
+        d.sensor_groups[i] = in.ConsumeIntegralInRange<int>(0, 15) == 0 ? g : (g & sensors);
+    }
     return d;
 }
 

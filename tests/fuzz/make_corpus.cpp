@@ -29,6 +29,10 @@ const Kind kKinds[] = {
     {"novelty", [](verve_agent_desc& d) { d.num_discrete_sensors = 1; d.discrete_sensor_values[0] = 4; d.planning = 1; d.curiosity = VERVE_CURIOSITY_NOVELTY; }},
     {"progress", [](verve_agent_desc& d) { d.num_continuous_sensors = 1; d.planning = 1; d.curiosity = VERVE_CURIOSITY_PROGRESS; }},
     {"no-sensors", [](verve_agent_desc& d) { d.num_actions = 4; }},
+    {"groups", [](verve_agent_desc& d) { d.num_continuous_sensors = 6; }},
+    {"custom-groups", [](verve_agent_desc& d) {
+         d.num_discrete_sensors = 1; d.discrete_sensor_values[0] = 2; d.num_continuous_sensors = 3;
+         d.sensor_grouping = VERVE_GROUPING_CUSTOM; d.num_sensor_groups = 2; d.sensor_groups[0] = 0b101; d.sensor_groups[1] = 0b011; }},
 };
 
 // A memory save of `object` (an agent, or a recording) by the two-call pattern, written to `path`.
@@ -70,7 +74,8 @@ int main(int argc, char** argv) {
         uint32_t action = 0;
         for (int step = 0; step < 12; ++step) {
             const int32_t discrete[2] = {step % 2, step % 3};
-            const float continuous[2] = {-0.9f + 0.15f * static_cast<float>(step), 0.3f};
+            const float x = -0.9f + 0.15f * static_cast<float>(step);
+            const float continuous[6] = {x, 0.3f, -x, 0.5f * x, 0.9f, -0.2f};
             const float reward = step % 4 == 3 ? 1.0f : -0.1f;
             if (verve_agent_update(agent, reward, discrete, d.num_discrete_sensors, continuous, d.num_continuous_sensors,
                                    0.1f, &action) != VERVE_OK) {
@@ -81,7 +86,8 @@ int main(int argc, char** argv) {
         if (recording != nullptr) {
             for (int step = 0; step < 8; ++step) {
                 const int32_t discrete[2] = {step % 2, step % 3};
-                const float continuous[2] = {0.2f * static_cast<float>(step) - 0.7f, -0.4f};
+                const float x = 0.2f * static_cast<float>(step) - 0.7f;
+                const float continuous[6] = {x, -0.4f, 0.5f * x, 0.1f, -x, 0.6f};
                 verve_recording_add_step(recording, step % 3 == 2 ? 0.5f : 0.0f, discrete, d.num_discrete_sensors,
                                          continuous, d.num_continuous_sensors, 0.1f, static_cast<uint32_t>(step) % d.num_actions);
                 if (step == 4) verve_recording_add_truncation(recording, -0.1f);
