@@ -23,7 +23,7 @@ std::string bytesOf(const verve_agent* agent, CountingAllocator& allocator) {
 
 class Scenario {
 public:
-    explicit Scenario(CountingAllocator& allocator) : allocator_(allocator) {}
+    Scenario(CountingAllocator& allocator, const verve_agent_desc& desc) : allocator_(allocator), desc_(desc) {}
     ~Scenario() { verve_agent_destroy(agent_); }
 
     int calls() const { return 127; }
@@ -67,13 +67,13 @@ public:
 
 private:
     CountingAllocator& allocator_;
-    verve_agent_desc desc_ = mixedDesc(true, 11);
+    verve_agent_desc desc_;
     verve_agent* agent_ = nullptr;
     size_t size_ = 0;
     std::string saved_;
 };
 
-TEST(AllocationFailure, EveryFailedAllocationLeavesTheAgentAsItWas) {
+void sweep(const verve_agent_desc& desc) {
     CountingAllocator allocator;
     const verve_hooks hooks = allocator.hooks();
     ASSERT_EQ(verve_set_hooks(&hooks), VERVE_OK) << lastError();
@@ -83,7 +83,7 @@ TEST(AllocationFailure, EveryFailedAllocationLeavesTheAgentAsItWas) {
     std::string reference;
     std::vector<long> upTo;
     {
-        Scenario s(allocator);
+        Scenario s(allocator, desc);
         for (int i = 0; i < s.calls(); ++i) {
             ASSERT_EQ(s.call(i), VERVE_OK) << "call " << i << ": " << lastError();
             upTo.push_back(allocator.allocations.load());
@@ -92,13 +92,13 @@ TEST(AllocationFailure, EveryFailedAllocationLeavesTheAgentAsItWas) {
     }
     const long total = upTo.back();
     ASSERT_GT(total, 500);
-    RecordProperty("allocations", static_cast<int>(total));
+    ::testing::Test::RecordProperty("allocations", static_cast<int>(total));
 
     int failures = 0;
     for (long n = 1; n <= total; ++n) {
         allocator.allocations = 0;
         allocator.failAt = n;
-        Scenario s(allocator);
+        Scenario s(allocator, desc);
         bool failed = false;
         for (int i = 0; i < s.calls(); ++i) {
             // Deterministic: allocation n falls in the same call as in the reference run.
@@ -124,6 +124,19 @@ TEST(AllocationFailure, EveryFailedAllocationLeavesTheAgentAsItWas) {
     }
     EXPECT_EQ(failures, total);
     ASSERT_EQ(verve_set_hooks(nullptr), VERVE_OK) << lastError();
+}
+
+TEST(AllocationFailure, EveryFailedAllocationLeavesTheAgentAsItWas) { sweep(mixedDesc(true, 11)); }
+
+// Sensor groups: a step adds an RBF in every group that lacks one, all or none.
+TEST(AllocationFailure, EveryFailedAllocationLeavesAnAgentWithSensorGroupsAsItWas) {
+    verve_agent_desc d = mixedDesc(false, 11);
+    d.sensor_grouping = VERVE_GROUPING_CUSTOM;
+    d.num_sensor_groups = 3;
+    d.sensor_groups[0] = 0b01;
+    d.sensor_groups[1] = 0b10;
+    d.sensor_groups[2] = 0b11;
+    sweep(d);
 }
 
 }  // namespace
