@@ -74,12 +74,20 @@ namespace Verve.Tests
             Assert.Equal((long)ResultCode.Internal, c["const VERVE_ERROR_INTERNAL"]);
             Assert.Equal((long)ActionSelection.Greedy, c["const VERVE_GREEDY"]);
             Assert.Equal((long)Adaptation.All, c["const VERVE_ADAPT_ALL"]);
+            Assert.Equal(AgentOptions.MaxSensorGroups, c["const VERVE_MAX_SENSOR_GROUPS"]);
+            Assert.Equal((long)SensorGrouping.Auto, c["const VERVE_GROUPING_AUTO"]);
+            Assert.Equal((long)SensorGrouping.Joint, c["const VERVE_GROUPING_JOINT"]);
+            Assert.Equal((long)SensorGrouping.Custom, c["const VERVE_GROUPING_CUSTOM"]);
             Assert.Equal(sizeof(ResultCode), c["const sizeof_enum"]);
         }
 
         [Fact]
-        public unsafe void BindingUsesTheCurrentDescriptorVersion() =>
-            Assert.Equal(Probe.Value["const VERVE_AGENT_DESC_SIZE_V4"], sizeof(verve_agent_desc));
+        public unsafe void BindingUsesTheCurrentDescriptorVersion()
+        {
+            Assert.Equal(Probe.Value["const VERVE_AGENT_DESC_SIZE_V5"], sizeof(verve_agent_desc));
+            // V4 ended where the V5 fields begin.
+            Assert.Equal(Probe.Value["const VERVE_AGENT_DESC_SIZE_V4"], (long)Marshal.OffsetOf<verve_agent_desc>("sensor_grouping"));
+        }
 
         [Fact]
         public unsafe void DescriptorDefaultsAgreeBetweenDefaultAndInit()

@@ -35,6 +35,9 @@ int main(void) {
     FIELD(verve_agent_desc, max_rbfs);
     FIELD(verve_agent_desc, policy_weight_bound);
     FIELD(verve_agent_desc, adaptation);
+    FIELD(verve_agent_desc, sensor_grouping);
+    FIELD(verve_agent_desc, num_sensor_groups);
+    FIELD(verve_agent_desc, sensor_groups);
 
     SIZE(verve_agent_stats);
     FIELD(verve_agent_stats, struct_size);
@@ -74,6 +77,11 @@ int main(void) {
     printf("const VERVE_AGENT_DESC_SIZE_V2 %u\n", (unsigned)VERVE_AGENT_DESC_SIZE_V2);
     printf("const VERVE_AGENT_DESC_SIZE_V3 %u\n", (unsigned)VERVE_AGENT_DESC_SIZE_V3);
     printf("const VERVE_AGENT_DESC_SIZE_V4 %u\n", (unsigned)VERVE_AGENT_DESC_SIZE_V4);
+    printf("const VERVE_AGENT_DESC_SIZE_V5 %u\n", (unsigned)VERVE_AGENT_DESC_SIZE_V5);
+    printf("const VERVE_MAX_SENSOR_GROUPS %d\n", VERVE_MAX_SENSOR_GROUPS);
+    printf("const VERVE_GROUPING_AUTO %d\n", VERVE_GROUPING_AUTO);
+    printf("const VERVE_GROUPING_JOINT %d\n", VERVE_GROUPING_JOINT);
+    printf("const VERVE_GROUPING_CUSTOM %d\n", VERVE_GROUPING_CUSTOM);
     printf("const VERVE_ADAPT_ALL %u\n", (unsigned)VERVE_ADAPT_ALL);
     printf("const VERVE_GREEDY %d\n", VERVE_ACTION_GREEDY);
     printf("const VERVE_VERSION_NUMBER %d\n", VERVE_VERSION_NUMBER);

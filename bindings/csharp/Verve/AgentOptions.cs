@@ -18,9 +18,12 @@ namespace Verve
         public const int MaxDiscreteSensors = verve_agent_desc.MaxDiscreteSensors;
         /// <summary>Most continuous sensors an agent can have.</summary>
         public const int MaxContinuousSensors = verve_agent_desc.MaxContinuousSensors;
+        /// <summary>Most sensor groups (lattices) a <see cref="SensorGrouping.Custom"/> grouping can list.</summary>
+        public const int MaxSensorGroups = verve_agent_desc.MaxSensorGroups;
 
         private readonly List<int> _discreteSensors = new List<int>();
         private readonly List<bool> _continuousCircular = new List<bool>();
+        private readonly List<IReadOnlyList<int>> _sensorGroups = new List<IReadOnlyList<int>>();
         private int _actions;
         private int _resolution;
         private int _maxPlanningSteps;
@@ -36,6 +39,8 @@ namespace Verve
                     _discreteSensors.Add((int)p->discrete_sensor_values[i]);
                 for (int i = 0; i < Math.Min(d.num_continuous_sensors, MaxContinuousSensors); i++)
                     _continuousCircular.Add(p->continuous_sensor_circular[i] != 0);
+                for (int i = 0; i < Math.Min(d.num_sensor_groups, MaxSensorGroups); i++)
+                    _sensorGroups.Add(SensorsOf(p->sensor_groups[i]));
             }
             _resolution = (int)d.resolution;
             _actions = (int)d.num_actions;
@@ -58,6 +63,7 @@ namespace Verve
             MaxRbfs = (long)d.max_rbfs;
             PolicyWeightBound = d.policy_weight_bound;
             Adaptation = (Adaptation)d.adaptation;
+            Grouping = (SensorGrouping)d.sensor_grouping;
         }
 
         /// <summary>Value count of each discrete sensor, in observation order.</summary>
@@ -130,6 +136,56 @@ namespace Verve
         /// <see cref="Verve.Adaptation.All"/>); <see cref="Verve.Adaptation.None"/> keeps every setting as given.</summary>
         public Adaptation Adaptation { get; set; }
 
+        /// <summary>Which continuous sensors share an RBF lattice (default <see cref="SensorGrouping.Auto"/>: one
+        /// lattice up to 4 continuous sensors, beyond that one per sensor and one per neighbouring pair, which
+        /// suits an NPC with many sensors). <see cref="AddSensorGroup(int[])"/> sets it to
+        /// <see cref="SensorGrouping.Custom"/>.</summary>
+        public SensorGrouping Grouping { get; set; }
+
+        /// <summary>The lattices of a <see cref="SensorGrouping.Custom"/> grouping: each the continuous sensors
+        /// (indices from 0, ascending) one lattice spans. Empty for the other groupings.</summary>
+        public IReadOnlyList<IReadOnlyList<int>> SensorGroups => _sensorGroups.AsReadOnly();
+
+        /// <summary>Adds a lattice over the continuous sensors listed (indices from 0, in the order they were
+        /// added) and sets <see cref="Grouping"/> to <see cref="SensorGrouping.Custom"/>. Every continuous
+        /// sensor must end up in at least one group; a sensor may be in several.</summary>
+        /// <example><code>
+        /// // 12 sensors: a lattice per sensor, and one over the bearing and distance (sensors 0 and 1) together.
+        /// for (int i = 0; i &lt; 12; i++) options.AddSensorGroup(i);
+        /// options.AddSensorGroup(0, 1);
+        /// </code></example>
+        /// <exception cref="ArgumentException">No sensor, a sensor listed twice, or an index outside
+        /// 0 .. <see cref="MaxContinuousSensors"/> - 1.</exception>
+        /// <exception cref="InvalidOperationException"><see cref="MaxSensorGroups"/> groups are already listed.</exception>
+        public AgentOptions AddSensorGroup(params int[] sensors)
+        {
+            if (sensors == null) throw new ArgumentNullException(nameof(sensors));
+            if (sensors.Length == 0)
+                throw new ArgumentException("a sensor group lists at least one continuous sensor", nameof(sensors));
+            ulong mask = 0;
+            foreach (int sensor in sensors)
+            {
+                if (sensor < 0 || sensor >= MaxContinuousSensors)
+                    throw new ArgumentOutOfRangeException(nameof(sensors), sensor,
+                        $"a sensor group lists continuous sensors by index, 0 to {MaxContinuousSensors - 1}");
+                if ((mask & (1UL << sensor)) != 0)
+                    throw new ArgumentException($"continuous sensor {sensor} is listed twice in one sensor group", nameof(sensors));
+                mask |= 1UL << sensor;
+            }
+            if (_sensorGroups.Count == MaxSensorGroups)
+                throw new InvalidOperationException($"an agent has at most {MaxSensorGroups} sensor groups");
+            _sensorGroups.Add(SensorsOf(mask));
+            Grouping = SensorGrouping.Custom;
+            return this;
+        }
+
+        /// <summary>Removes all sensor groups (<see cref="Grouping"/> is left as it is).</summary>
+        public AgentOptions ClearSensorGroups()
+        {
+            _sensorGroups.Clear();
+            return this;
+        }
+
         /// <summary>Adds a discrete sensor reading integers 0 .. <paramref name="values"/> - 1.</summary>
         public AgentOptions AddDiscreteSensor(int values)
         {
@@ -150,11 +206,12 @@ namespace Verve
             return this;
         }
 
-        /// <summary>Removes all sensors.</summary>
+        /// <summary>Removes all sensors, and the sensor groups, which name them.</summary>
         public AgentOptions ClearSensors()
         {
             _discreteSensors.Clear();
             _continuousCircular.Clear();
+            _sensorGroups.Clear();
             return this;
         }
 
@@ -186,7 +243,61 @@ namespace Verve
             d.max_rbfs = MaxRbfs < 0 ? ulong.MaxValue : (ulong)MaxRbfs; // negative: refused by the library
             d.policy_weight_bound = PolicyWeightBound;
             d.adaptation = (ulong)Adaptation;
+            d.sensor_grouping = (uint)Grouping; // an unknown value: refused by the library
+            CheckSensorGroups();
+            d.num_sensor_groups = (uint)_sensorGroups.Count;
+            for (int i = 0; i < _sensorGroups.Count; i++) d.sensor_groups[i] = MaskOf(_sensorGroups[i]);
             return d;
+        }
+
+        // What only the sensor list and the groups together tell; the messages speak this class's terms
+        // (the library's would name C fields and bits).
+        private void CheckSensorGroups()
+        {
+            int n = _continuousCircular.Count;
+            if (Grouping != SensorGrouping.Custom)
+            {
+                if (_sensorGroups.Count > 0)
+                    throw new ArgumentException($"sensor groups are only used with Grouping = SensorGrouping.Custom (it is {Grouping}); " +
+                                                "set Grouping to Custom or call ClearSensorGroups()", "options");
+                return;
+            }
+            if (_sensorGroups.Count == 0 && n > 0)
+                throw new ArgumentException("Grouping = SensorGrouping.Custom needs sensor groups (AddSensorGroup) " +
+                                            "covering every continuous sensor", "options");
+            ulong covered = 0;
+            for (int g = 0; g < _sensorGroups.Count; g++)
+            {
+                foreach (int sensor in _sensorGroups[g])
+                {
+                    if (sensor >= n)
+                        throw new ArgumentException($"sensor group {g} lists continuous sensor {sensor}, but the agent has " +
+                                                    $"{n} continuous sensor{(n == 1 ? "" : "s")}", "options");
+                }
+                covered |= MaskOf(_sensorGroups[g]);
+            }
+            for (int sensor = 0; sensor < n; sensor++)
+            {
+                if ((covered & (1UL << sensor)) == 0)
+                    throw new ArgumentException($"continuous sensor {sensor} is in no sensor group: its readings would be " +
+                                                "ignored (with Grouping = SensorGrouping.Custom every continuous sensor " +
+                                                "is in at least one group)", "options");
+            }
+        }
+
+        private static IReadOnlyList<int> SensorsOf(ulong mask)
+        {
+            var sensors = new List<int>();
+            for (int i = 0; i < 64; i++)
+                if ((mask & (1UL << i)) != 0) sensors.Add(i);
+            return sensors.AsReadOnly();
+        }
+
+        private static ulong MaskOf(IReadOnlyList<int> sensors)
+        {
+            ulong mask = 0;
+            foreach (int sensor in sensors) mask |= 1UL << sensor;
+            return mask;
         }
 
         // verve_agent_desc_init writes only sizeof(our struct) bytes, so this binding stays safe with a

@@ -19,6 +19,8 @@ namespace Verve
 
         /// <summary>Creates a brain described by <paramref name="options"/>.</summary>
         /// <exception cref="VerveException">The description is invalid (the message names the field).</exception>
+        /// <exception cref="ArgumentException">The sensor groups do not fit the continuous sensors (one names a
+        /// sensor the options lack, or a sensor is in none), or are given without <see cref="SensorGrouping.Custom"/>.</exception>
         public unsafe Brain(AgentOptions options)
         {
             if (options == null) throw new ArgumentNullException(nameof(options));

@@ -11,6 +11,20 @@ namespace Verve
         Full = 1,
     }
 
+    /// <summary>Which continuous sensors share an RBF lattice (<c>verve_sensor_grouping</c>). One lattice over
+    /// n sensors needs resolution^n RBFs; several lattices over small groups, their features summed, need far
+    /// fewer and let an agent with many sensors learn.</summary>
+    public enum SensorGrouping : uint
+    {
+        /// <summary>One lattice over up to 4 continuous sensors; beyond that one per sensor and one per
+        /// neighbouring pair (sensors i and i + 1), so list related sensors next to each other (default).</summary>
+        Auto = 0,
+        /// <summary>One lattice over all continuous sensors (the thesis): resolution^n RBFs.</summary>
+        Joint = 1,
+        /// <summary>The lattices given by <see cref="AgentOptions.AddSensorGroup(int[])"/>.</summary>
+        Custom = 2,
+    }
+
     /// <summary>Settings an agent sets for itself from what it experiences (<c>VERVE_ADAPT_*</c> bits).</summary>
     [Flags]
     public enum Adaptation : ulong

@@ -164,6 +164,32 @@ static class MonoHost
             }
         });
 
+        // Sensor groups: Auto's lattices for 12 sensors (Full allocation shows them), custom groups there and back.
+        Check("AgentOptions.get_Grouping(); AgentOptions.set_Grouping(SensorGrouping); AgentOptions.AddSensorGroup(Int32[]); " +
+              "AgentOptions.get_SensorGroups(); AgentOptions.ClearSensorGroups()", () =>
+        {
+            var options = new AgentOptions { Actions = 3, RbfAllocation = RbfAllocation.Full, Resolution = 10 };
+            for (int i = 0; i < 12; i++) options.AddContinuousSensor(false);
+            Require(options.Grouping == SensorGrouping.Auto && options.SensorGroups.Count == 0, "Auto with no groups is not the default");
+            using (var agent = new Agent(options))
+                Require(agent.RbfCount == 12 * 10 + 11 * 100, "Auto over 12 sensors made " + agent.RbfCount + " RBFs");
+            for (int i = 0; i < 12; i++) options.AddSensorGroup(i);
+            options.AddSensorGroup(1, 0);
+            Require(options.Grouping == SensorGrouping.Custom, "AddSensorGroup did not set Custom");
+            using (var agent = new Agent(options))
+            {
+                Require(agent.RbfCount == 12 * 10 + 100, "the custom groups made " + agent.RbfCount + " RBFs");
+                var back = agent.Options.SensorGroups;
+                Require(back.Count == 13 && back[12].SequenceEqual(new[] { 0, 1 }), "the groups did not come back");
+            }
+            options.ClearSensorGroups();
+            options.Grouping = SensorGrouping.Joint;
+            Require(options.SensorGroups.Count == 0, "ClearSensorGroups left groups");
+            options.AddSensorGroup(0);
+            options.Grouping = SensorGrouping.Auto;
+            Expect<ArgumentException>(() => new Agent(options));
+        });
+
         Check("Agent.UpdateDemonstrated(Single, ReadOnlySpan<Int32>, ReadOnlySpan<Single>, Single, Int32, ReadOnlySpan<Byte>); " +
               "Agent.Teach(Single); Agent.Replay(Recording); Recording..ctor(Agent); " +
               "Recording.AddStep(Single, ReadOnlySpan<Int32>, ReadOnlySpan<Single>, Single, Int32); " +

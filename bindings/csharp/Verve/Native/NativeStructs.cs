@@ -13,6 +13,7 @@ namespace Verve.Native
     {
         public const int MaxDiscreteSensors = 16;   // VERVE_MAX_DISCRETE_SENSORS
         public const int MaxContinuousSensors = 16; // VERVE_MAX_CONTINUOUS_SENSORS
+        public const int MaxSensorGroups = 64;      // VERVE_MAX_SENSOR_GROUPS
 
         public uint struct_size;
         public uint num_discrete_sensors;
@@ -42,6 +43,9 @@ namespace Verve.Native
         public ulong max_rbfs; // V3
         public float policy_weight_bound;
         public ulong adaptation; // V4
+        public uint sensor_grouping; // V5
+        public uint num_sensor_groups;
+        public fixed ulong sensor_groups[MaxSensorGroups]; // bit i: continuous sensor i
     }
 
     [StructLayout(LayoutKind.Sequential)]
