@@ -124,6 +124,7 @@ static const char* const lv_allocation_names[] = {"dynamic", "full", NULL};
 static const char* const lv_curiosity_names[] = {"none", "novelty", "progress", NULL};
 static const char* const lv_prediction_names[] = {"categorical", "ordinal", NULL};
 static const char* const lv_selection_names[] = {"sample", "greedy", NULL};
+static const char* const lv_grouping_names[] = {"auto", "joint", "custom", NULL};
 #define LV_MAX_ACTIONS 4096 /* the library's limit on num_actions */
 
 #define LV_FIELD(name, member, kind, names) {name, offsetof(verve_agent_desc, member), kind, names}
@@ -149,6 +150,7 @@ static const lv_field lv_fields[] = {
     LV_FIELD("max_rbfs", max_rbfs, LV_UINT64, NULL),
     LV_FIELD("policy_weight_bound", policy_weight_bound, LV_FLOAT, NULL),
     LV_FIELD("adaptation", adaptation, LV_UINT64, NULL),
+    LV_FIELD("grouping", sensor_grouping, LV_ENUM, lv_grouping_names),
 };
 #define LV_FIELD_COUNT (sizeof lv_fields / sizeof lv_fields[0])
 
@@ -261,8 +263,72 @@ static void lv_read_continuous_sensors(lua_State* L, verve_agent_desc* d) {
     d->num_continuous_sensors = n;
 }
 
+/* sensor_groups = {{1, 2}, {3}, ...}: each group a list of continuous sensors (from 1), on top of
+ * the stack, into bit masks (bit i: sensor i + 1). Whether the groups fit the sensors is checked once
+ * the whole descriptor is read (lv_check_sensor_groups). */
+static void lv_read_sensor_groups(lua_State* L, verve_agent_desc* d) {
+    uint32_t n, g, k, m;
+    if (!lua_istable(L, -1)) lv_desc_error(L, "sensor_groups", "a list of groups like {{1, 2}, {3}}");
+    n = (uint32_t)lua_rawlen(L, -1);
+    if (n > VERVE_MAX_SENSOR_GROUPS)
+        luaL_error(L, "verve: agent: %d sensor_groups; at most %d", (int)n, VERVE_MAX_SENSOR_GROUPS);
+    for (g = 0; g < n; ++g) {
+        uint64_t mask = 0;
+        lua_rawgeti(L, -1, (int)g + 1);
+        if (!lua_istable(L, -1))
+            luaL_error(L, "verve: agent: sensor_groups[%d] must be a list of continuous sensors from 1 (got %s)",
+                       (int)g + 1, luaL_typename(L, -1));
+        m = (uint32_t)lua_rawlen(L, -1);
+        if (m == 0) luaL_error(L, "verve: agent: sensor_groups[%d] is empty", (int)g + 1);
+        for (k = 0; k < m; ++k) {
+            lua_Integer s = 0;
+            lua_rawgeti(L, -1, (int)k + 1);
+            if (!lv_tointeger(L, -1, &s) || s < 1 || s > VERVE_MAX_CONTINUOUS_SENSORS)
+                luaL_error(L, "verve: agent: sensor_groups[%d][%d] must be a continuous sensor from 1 to %d (got %s)",
+                           (int)g + 1, (int)k + 1, VERVE_MAX_CONTINUOUS_SENSORS,
+                           lua_type(L, -1) == LUA_TNUMBER ? lua_tostring(L, -1) : luaL_typename(L, -1));
+            if (mask & ((uint64_t)1 << (s - 1)))
+                luaL_error(L, "verve: agent: sensor_groups[%d] lists continuous sensor %d twice", (int)g + 1, (int)s);
+            mask |= (uint64_t)1 << (s - 1);
+            lua_pop(L, 1);
+        }
+        d->sensor_groups[g] = mask;
+        lua_pop(L, 1);
+    }
+    d->num_sensor_groups = n;
+}
+
+/* Groups against sensors, in Lua's terms (sensors from 1); the library would check the same and
+ * speak of bits and sensors from 0. Groups alone mean custom grouping. */
+static void lv_check_sensor_groups(lua_State* L, verve_agent_desc* d, int grouping_given) {
+    uint32_t n = d->num_continuous_sensors, g, s;
+    uint64_t covered = 0;
+    if (!grouping_given && d->num_sensor_groups > 0) d->sensor_grouping = VERVE_GROUPING_CUSTOM;
+    if (d->sensor_grouping != VERVE_GROUPING_CUSTOM) {
+        if (d->num_sensor_groups > 0)
+            luaL_error(L, "verve: agent: sensor_groups are only used with grouping = \"custom\" (got \"%s\")",
+                       lv_grouping_names[d->sensor_grouping]);
+        return;
+    }
+    if (d->num_sensor_groups == 0 && n > 0)
+        luaL_error(L, "verve: agent: grouping = \"custom\" needs sensor_groups covering every continuous sensor");
+    for (g = 0; g < d->num_sensor_groups; ++g) {
+        for (s = n; s < VERVE_MAX_CONTINUOUS_SENSORS; ++s)
+            if (d->sensor_groups[g] & ((uint64_t)1 << s))
+                luaL_error(L, "verve: agent: sensor_groups[%d] lists continuous sensor %d, but the agent has %d",
+                           (int)g + 1, (int)s + 1, (int)n);
+        covered |= d->sensor_groups[g];
+    }
+    for (s = 0; s < n; ++s)
+        if (!(covered & ((uint64_t)1 << s)))
+            luaL_error(L, "verve: agent: continuous sensor %d is in none of sensor_groups: its readings would be "
+                          "ignored",
+                       (int)s + 1);
+}
+
 /* The table at idx over the library defaults; unknown fields and wrong types are errors. */
 static void lv_read_desc(lua_State* L, int idx, verve_agent_desc* d) {
+    int grouping_given = 0;
     idx = lua_absindex(L, idx);
     luaL_checktype(L, idx, LUA_TTABLE);
     verve_agent_desc_default(d);
@@ -277,19 +343,23 @@ static void lv_read_desc(lua_State* L, int idx, verve_agent_desc* d) {
             lv_read_discrete_sensors(L, d);
         } else if (strcmp(key, "continuous") == 0) {
             lv_read_continuous_sensors(L, d);
+        } else if (strcmp(key, "sensor_groups") == 0) {
+            lv_read_sensor_groups(L, d);
         } else {
             while (i < LV_FIELD_COUNT && strcmp(lv_fields[i].name, key) != 0) ++i;
             if (i == LV_FIELD_COUNT) luaL_error(L, "verve: agent: unknown descriptor field '%s'", key);
             lv_read_field(L, &lv_fields[i], d);
+            if (lv_fields[i].offset == offsetof(verve_agent_desc, sensor_grouping)) grouping_given = 1;
         }
         lua_pop(L, 1);
     }
+    lv_check_sensor_groups(L, d, grouping_given);
 }
 
 static void lv_push_desc(lua_State* L, const verve_agent_desc* d) {
     uint32_t i;
     size_t f;
-    lua_createtable(L, 0, (int)LV_FIELD_COUNT + 2);
+    lua_createtable(L, 0, (int)LV_FIELD_COUNT + 3);
     lua_createtable(L, (int)d->num_discrete_sensors, 0);
     for (i = 0; i < d->num_discrete_sensors && i < VERVE_MAX_DISCRETE_SENSORS; ++i) {
         lua_pushinteger(L, (lua_Integer)d->discrete_sensor_values[i]);
@@ -304,6 +374,18 @@ static void lv_push_desc(lua_State* L, const verve_agent_desc* d) {
         lua_rawseti(L, -2, (int)i + 1);
     }
     lua_setfield(L, -2, "continuous");
+    lua_createtable(L, (int)d->num_sensor_groups, 0);
+    for (i = 0; i < d->num_sensor_groups && i < VERVE_MAX_SENSOR_GROUPS; ++i) {
+        uint32_t s, k = 0;
+        lua_newtable(L);
+        for (s = 0; s < 64; ++s) {
+            if (!(d->sensor_groups[i] & ((uint64_t)1 << s))) continue;
+            lua_pushinteger(L, (lua_Integer)s + 1);
+            lua_rawseti(L, -2, (int)++k);
+        }
+        lua_rawseti(L, -2, (int)i + 1);
+    }
+    lua_setfield(L, -2, "sensor_groups");
     for (f = 0; f < LV_FIELD_COUNT; ++f) {
         lv_push_field(L, &lv_fields[f], d);
         lua_setfield(L, -2, lv_fields[f].name);

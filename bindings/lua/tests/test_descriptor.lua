@@ -21,6 +21,7 @@ T.check("every field survives the round trip through descriptor()", function()
     tau_eligibility = 0.2, policy_multiplier = 7, trace_threshold = 0.05, seed = 123456789,
     planning = true, tau_model = 0.5, max_planning_steps = 20,
     planning_uncertainty_threshold = 0.3, curiosity = "novelty", curiosity_factor = 2, max_rbfs = 200000,
+    grouping = "joint",
   }
   local d = verve.agent(given):descriptor()
   for k, v in pairs(given) do
