@@ -59,6 +59,18 @@ export interface AgentDescriptor {
   policyWeightBound?: number;
   /** What the agent sets for itself: bits 1 (horizon), 2 (actor scale); default 3, 0: every setting as given. */
   adaptation?: number | bigint;
+  /**
+   * Which continuous sensors share an RBF lattice. 'auto' (default): one lattice up to 4 sensors,
+   * beyond that one per sensor and one per neighbouring pair (i, i + 1), so many sensors stay
+   * cheap and learnable; 'joint': one lattice over all (resolution^n RBFs); 'custom': sensorGroups.
+   */
+  grouping?: 'auto' | 'joint' | 'custom';
+  /**
+   * 'custom' grouping: one lattice per group, each a list of continuous sensor indices (from 0),
+   * e.g. [[0, 1], [2], [3]]; every sensor in at least one group, at most 64 groups. Given without
+   * `grouping`, it means 'custom'. Read back: [] for the other groupings.
+   */
+  sensorGroups?: number[][];
 }
 
 /** A descriptor as read back: every field present, continuous as a list. */

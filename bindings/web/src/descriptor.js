@@ -5,6 +5,7 @@ import { invalidArgument } from './errors.js';
 
 export const MAX_DISCRETE_SENSORS = 16;
 export const MAX_CONTINUOUS_SENSORS = 16;
+export const MAX_SENSOR_GROUPS = 64;
 
 // Indices into the layout table of wasm/verve_web_layout.c.
 export const L = Object.freeze({
@@ -17,13 +18,15 @@ export const L = Object.freeze({
   statsSteps: 28, statsRbfCount: 29, statsLiveTraces: 30, statsValue: 31, statsTdError: 32,
   statsModelError: 33, statsPredictedUncertainty: 34, statsPlanningSteps: 35, statsCuriosityReward: 36,
   statsRbfBudgetHits: 37, statsClampedRewards: 38, batchWorkerCount: 39, adaptation: 40,
+  sensorGrouping: 41, numSensorGroups: 42, sensorGroups: 43,
 });
-export const LAYOUT_LENGTH = 41;
+export const LAYOUT_LENGTH = 44;
 
 const ENUMS = {
   allocation: ['dynamic', 'full'],
   curiosity: ['none', 'novelty', 'progress'],
   discretePrediction: ['categorical', 'ordinal'],
+  grouping: ['auto', 'joint', 'custom'],
 };
 
 // [field, layout index, kind]; discrete and continuous are handled on their own.
@@ -49,8 +52,9 @@ const SCALARS = [
   ['maxRbfs', 'maxRbfs', 'u64'],
   ['policyWeightBound', 'policyWeightBound', 'f32'],
   ['adaptation', 'adaptation', 'u64'],
+  ['grouping', 'sensorGrouping', 'enum'],
 ];
-const KNOWN = new Set(['discrete', 'continuous', ...SCALARS.map(([name]) => name)]);
+const KNOWN = new Set(['discrete', 'continuous', 'sensorGroups', ...SCALARS.map(([name]) => name)]);
 
 function describe(value) {
   if (value === null) return 'null';
@@ -141,7 +145,65 @@ export function checkDescriptor(desc) {
         break;
     }
   }
+  if (desc.sensorGroups !== undefined) out.sensorGroups = checkSensorGroups(desc.sensorGroups);
+  checkGroupsFitSensors(out);
   return out;
+}
+
+/** sensorGroups: a list of groups, each a list of continuous sensors (indices from 0). */
+function checkSensorGroups(value) {
+  if (!Array.isArray(value)) {
+    throw invalidArgument(`descriptor.sensorGroups must be an array of groups such as [[0, 1], [2]] (got ${describe(value)})`);
+  }
+  if (value.length > MAX_SENSOR_GROUPS) {
+    throw invalidArgument(`descriptor.sensorGroups has ${value.length} groups, at most ${MAX_SENSOR_GROUPS}`);
+  }
+  return value.map((group, g) => {
+    if (!Array.isArray(group) && !ArrayBuffer.isView(group)) {
+      throw invalidArgument(`descriptor.sensorGroups[${g}] must be an array of continuous sensor indices (got ${describe(group)})`);
+    }
+    if (group.length === 0) throw invalidArgument(`descriptor.sensorGroups[${g}] is empty`);
+    if (group.length > MAX_CONTINUOUS_SENSORS) {
+      throw invalidArgument(`descriptor.sensorGroups[${g}] has ${group.length} entries, at most ${MAX_CONTINUOUS_SENSORS} sensors`);
+    }
+    const sensors = Array.from(group);
+    sensors.forEach((s, k) => {
+      if (!Number.isInteger(s) || s < 0 || s >= MAX_CONTINUOUS_SENSORS) {
+        throw invalidArgument(`descriptor.sensorGroups[${g}][${k}] must be a continuous sensor index from 0 to ${MAX_CONTINUOUS_SENSORS - 1} (got ${describe(s)})`);
+      }
+      if (sensors.indexOf(s) !== k) throw invalidArgument(`descriptor.sensorGroups[${g}] lists continuous sensor ${s} twice`);
+    });
+    return sensors.sort((a, b) => a - b);
+  });
+}
+
+// Groups against sensors, in this API's terms (the library checks the same, in C's); groups given
+// without a grouping mean 'custom'.
+function checkGroupsFitSensors(out) {
+  const groups = out.sensorGroups ?? [];
+  if (out.grouping === undefined && groups.length > 0) out.grouping = 'custom';
+  if (out.grouping !== 'custom') {
+    if (groups.length > 0) {
+      throw invalidArgument(`descriptor.sensorGroups is only used with grouping 'custom' (got '${out.grouping}')`);
+    }
+    return;
+  }
+  const n = out.continuous?.length ?? 0;
+  if (groups.length === 0 && n > 0) {
+    throw invalidArgument("descriptor.grouping 'custom' needs sensorGroups covering every continuous sensor");
+  }
+  const covered = new Set();
+  groups.forEach((group, g) => {
+    for (const s of group) {
+      if (s >= n) throw invalidArgument(`descriptor.sensorGroups[${g}] lists continuous sensor ${s}, but the agent has ${n}`);
+      covered.add(s);
+    }
+  });
+  for (let s = 0; s < n; ++s) {
+    if (!covered.has(s)) {
+      throw invalidArgument(`continuous sensor ${s} is in none of descriptor.sensorGroups: its readings would be ignored`);
+    }
+  }
 }
 
 /** Writes a checked descriptor over the defaults already at `ptr` (verve_agent_desc_default). */
@@ -155,6 +217,19 @@ export function writeDescriptor(heap, layout, ptr, desc) {
   if (desc.continuous) {
     u32[at('numContinuous') >> 2] = desc.continuous.length;
     desc.continuous.forEach((s, i) => { u8[at('circular') + i] = s.circular ? 1 : 0; });
+  }
+  if (desc.sensorGroups) {
+    u32[at('numSensorGroups') >> 2] = desc.sensorGroups.length;
+    desc.sensorGroups.forEach((group, g) => {
+      let low = 0, high = 0;  // bit s: continuous sensor s; sensors are below 16, so high stays 0 today
+      for (const s of group) {
+        if (s < 32) low |= 1 << s;
+        else high |= 1 << (s - 32);
+      }
+      const p = (at('sensorGroups') >> 2) + 2 * g;
+      u32[p] = low >>> 0;
+      u32[p + 1] = high >>> 0;
+    });
   }
   for (const [name, field, kind] of SCALARS) {
     const value = desc[name];
@@ -192,6 +267,14 @@ export function readDescriptor(heap, layout, ptr) {
   const desc = {
     discrete: Array.from({ length: Math.min(nd, MAX_DISCRETE_SENSORS) }, (_, i) => u32[(at('discreteValues') >> 2) + i]),
     continuous: Array.from({ length: Math.min(nc, MAX_CONTINUOUS_SENSORS) }, (_, i) => ({ circular: u8[at('circular') + i] !== 0 })),
+    sensorGroups: Array.from({ length: Math.min(u32[at('numSensorGroups') >> 2], MAX_SENSOR_GROUPS) }, (_, g) => {
+      const p = (at('sensorGroups') >> 2) + 2 * g;
+      const sensors = [];
+      for (let s = 0; s < 64; ++s) {
+        if ((u32[p + (s >> 5)] >>> (s & 31)) & 1) sensors.push(s);
+      }
+      return sensors;
+    }),
   };
   for (const [name, field, kind] of SCALARS) {
     const p = at(field);

@@ -100,7 +100,7 @@ test('descriptors: unknown fields, wrong types and values the library refuses', 
 });
 
 test('a descriptor read back creates the same agent', () => {
-  const desc = { discrete: [3, 5], continuous: [{ circular: true }], actions: 4, resolution: 7, tauValue: 0.25, seed: 99, planning: true, curiosity: 'novelty', policyWeightBound: 2, adaptation: 1 };
+  const desc = { discrete: [3, 5], continuous: [{ circular: true }], actions: 4, resolution: 7, tauValue: 0.25, seed: 99, planning: true, curiosity: 'novelty', policyWeightBound: 2, adaptation: 1, grouping: 'joint' };
   const agent = verve.createAgent(desc);
   const back = agent.descriptor();
   for (const [k, v] of Object.entries(desc)) {

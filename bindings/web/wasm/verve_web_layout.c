@@ -24,6 +24,8 @@ static const uint32_t layout[] = {
     (uint32_t)offsetof(verve_batch_desc, worker_count),
     /* 40: verve_agent_desc, V4 */
     D(adaptation),
+    /* 41: verve_agent_desc, V5 */
+    D(sensor_grouping), D(num_sensor_groups), D(sensor_groups),
 };
 
 /* The table above and its length. */

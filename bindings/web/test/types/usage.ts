@@ -12,6 +12,9 @@ const values: Float32Array = agent.sampleValues([{ kind: 'continuous', index: 0,
 const bytes: Uint8Array = agent.saveBinaryBytes();
 const copy = verve.loadAgent(bytes);
 const brain = verve.createBrain({ continuous: 2, actions: 3 });
+const npc = verve.createAgent({ continuous: 12, actions: 4 });  // grouping 'auto': a lattice per sensor and per pair
+const custom = verve.createAgent({ continuous: 3, actions: 2, grouping: 'custom', sensorGroups: [[0, 1], [2]] });
+const groups: number[][] = custom.descriptor().sensorGroups;
 const bodies = [brain.createBody(), brain.createBody()];
 const actions: Uint32Array = verve.createBatch().update(bodies, [0, 0], [{ continuous: [0, 0] }, null], 0.05);
 agent.setActionSelection('greedy');
@@ -22,9 +25,12 @@ try {
 }
 // @ts-expect-error unknown descriptor field
 verve.createAgent({ tauVale: 1 });
+// @ts-expect-error the grouping is 'auto', 'joint' or 'custom'
+verve.createAgent({ grouping: 'pairs' });
 // @ts-expect-error the selection is 'sample' or 'greedy'
 agent.setActionSelection('best');
 // @ts-expect-error a reward is a number
 agent.update('1', null, 0.1);
 console.log(action, p, values, copy.rbfCount(), actions, agent.stats().steps, verve.defaults().tauValue);
-for (const x of [agent, copy, ...bodies, brain]) x.dispose();
+console.log(groups);
+for (const x of [agent, copy, npc, custom, ...bodies, brain]) x.dispose();
