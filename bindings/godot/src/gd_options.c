@@ -1,9 +1,12 @@
 #include "gd_options.h"
 
 #include <stddef.h>
+#include <stdio.h>
 #include <string.h>
 
-typedef enum vg_kind { VG_UINT, VG_FLOAT, VG_UINT64, VG_BOOL, VG_ENUM, VG_DISCRETE_SENSORS, VG_CIRCULAR } vg_kind;
+typedef enum vg_kind {
+    VG_UINT, VG_FLOAT, VG_UINT64, VG_BOOL, VG_ENUM, VG_DISCRETE_SENSORS, VG_CIRCULAR, VG_SENSOR_GROUPS
+} vg_kind;
 
 typedef struct vg_option {
     const char* name;
@@ -15,6 +18,7 @@ typedef struct vg_option {
 static const char* const vg_allocation_names[] = {"dynamic", "full", NULL};
 static const char* const vg_curiosity_names[] = {"none", "novelty", "progress", NULL};
 static const char* const vg_prediction_names[] = {"categorical", "ordinal", NULL};
+static const char* const vg_grouping_names[] = {"auto", "joint", "custom", NULL};
 
 #define VG_OPTION(name, member, kind, names) {name, offsetof(verve_agent_desc, member), kind, names}
 static const vg_option vg_options[] = {
@@ -41,7 +45,10 @@ static const vg_option vg_options[] = {
     VG_OPTION("max_rbfs", max_rbfs, VG_UINT64, NULL),
     VG_OPTION("policy_weight_bound", policy_weight_bound, VG_FLOAT, NULL),
     VG_OPTION("adaptation", adaptation, VG_UINT64, NULL),
+    VG_OPTION("grouping", sensor_grouping, VG_ENUM, vg_grouping_names),
+    VG_OPTION("sensor_groups", sensor_groups, VG_SENSOR_GROUPS, NULL),
 };
+
 #define VG_OPTION_COUNT (sizeof vg_options / sizeof vg_options[0])
 
 static int vg_option_error(vg_call* c, const vg_option* o, const char* expected, const godot_variant* v) {
@@ -82,6 +89,75 @@ static int vg_read_circular(vg_call* c, const vg_option* o, const godot_variant*
     vg_core->godot_array_destroy(&array);
     if (ok) d->num_continuous_sensors = (uint32_t)n;
     return ok;
+}
+
+/* sensor_groups: an Array of groups, each an Array (or PoolIntArray) of continuous sensor indices
+ * from 0, into bit masks (bit i: sensor i). Whether they fit the sensors: vg_check_sensor_groups. */
+static int vg_read_sensor_groups(vg_call* c, const vg_option* o, const godot_variant* v, verve_agent_desc* d) {
+    godot_array array;
+    godot_int n, g;
+    int ok = 1;
+    if (vg_core->godot_variant_get_type(v) != GODOT_VARIANT_TYPE_ARRAY)
+        return vg_option_error(c, o, "an Array of groups of continuous sensor indices, like [[0, 1], [2]]", v);
+    array = vg_core->godot_variant_as_array(v);
+    n = vg_core->godot_array_size(&array);
+    if (n > VERVE_MAX_SENSOR_GROUPS)
+        ok = vg_fail(c, "option '%s' has %d groups; at most %d", o->name, (int)n, VERVE_MAX_SENSOR_GROUPS);
+    for (g = 0; ok && g < n; ++g) {
+        const godot_variant* e = vg_core->godot_array_operator_index_const(&array, g);
+        godot_variant_type t = vg_core->godot_variant_get_type(e);
+        int32_t sensors[VERVE_MAX_CONTINUOUS_SENSORS];
+        uint32_t m = 0, k;
+        uint64_t mask = 0;
+        char name[64];
+        snprintf(name, sizeof name, "option '%s'[%d]", o->name, (int)g);
+        if (t != GODOT_VARIANT_TYPE_ARRAY && t != GODOT_VARIANT_TYPE_POOL_INT_ARRAY) {
+            ok = vg_fail(c, "%s must be an Array of continuous sensor indices (got %s)", name, vg_type_name(e));
+            break;
+        }
+        ok = vg_read_ints(c, e, name, sensors, VERVE_MAX_CONTINUOUS_SENSORS, &m);
+        if (ok && m == 0) ok = vg_fail(c, "%s is empty", name);
+        for (k = 0; ok && k < m; ++k) {
+            if (sensors[k] < 0 || sensors[k] >= VERVE_MAX_CONTINUOUS_SENSORS)
+                ok = vg_fail(c, "%s[%u] must be a continuous sensor index from 0 to %d (got %d)", name, k,
+                             VERVE_MAX_CONTINUOUS_SENSORS - 1, (int)sensors[k]);
+            else if (mask & ((uint64_t)1 << sensors[k]))
+                ok = vg_fail(c, "%s lists continuous sensor %d twice", name, (int)sensors[k]);
+            else
+                mask |= (uint64_t)1 << sensors[k];
+        }
+        if (ok) d->sensor_groups[g] = mask;
+    }
+    vg_core->godot_array_destroy(&array);
+    if (ok) d->num_sensor_groups = (uint32_t)n;
+    return ok;
+}
+
+/* Groups against sensors, in this API's terms (the library checks the same and speaks of C fields
+ * and bits). Groups given without 'grouping' mean "custom". */
+static int vg_check_sensor_groups(vg_call* c, verve_agent_desc* d, int grouping_given) {
+    uint32_t n = d->num_continuous_sensors, g, s;
+    uint64_t covered = 0;
+    if (!grouping_given && d->num_sensor_groups > 0) d->sensor_grouping = VERVE_GROUPING_CUSTOM;
+    if (d->sensor_grouping != VERVE_GROUPING_CUSTOM) {
+        if (d->num_sensor_groups > 0)
+            return vg_fail(c, "option 'sensor_groups' is only used with 'grouping' \"custom\" (got \"%s\")",
+                           vg_grouping_names[d->sensor_grouping]);
+        return 1;
+    }
+    if (d->num_sensor_groups == 0 && n > 0)
+        return vg_fail(c, "option 'grouping' \"custom\" needs 'sensor_groups' covering every continuous sensor");
+    for (g = 0; g < d->num_sensor_groups; ++g) {
+        for (s = n; s < VERVE_MAX_CONTINUOUS_SENSORS; ++s)
+            if (d->sensor_groups[g] & ((uint64_t)1 << s))
+                return vg_fail(c, "option 'sensor_groups'[%u] lists continuous sensor %u, but the agent has %u", g, s, n);
+        covered |= d->sensor_groups[g];
+    }
+    for (s = 0; s < n; ++s)
+        if (!(covered & ((uint64_t)1 << s)))
+            return vg_fail(c, "continuous sensor %u is in none of option 'sensor_groups': its readings would be ignored",
+                           s);
+    return 1;
 }
 
 static int vg_read_enum(vg_call* c, const vg_option* o, const godot_variant* v, uint32_t* out) {
@@ -126,6 +202,7 @@ static int vg_read_option(vg_call* c, const vg_option* o, const godot_variant* v
     case VG_ENUM: return vg_read_enum(c, o, v, (uint32_t*)p);
     case VG_DISCRETE_SENSORS: return vg_read_discrete_sensors(c, o, v, d);
     case VG_CIRCULAR: return vg_read_circular(c, o, v, d);
+    case VG_SENSOR_GROUPS: return vg_read_sensor_groups(c, o, v, d);
     }
     return 0;
 }
@@ -143,6 +220,8 @@ int vg_options_read(vg_call* c, int i, verve_agent_desc* d) {
     ok = vg_dict_fields(c, &dict, "option", vg_options, sizeof vg_options[0], (int)VG_OPTION_COUNT, values);
     for (k = 0; ok && k < VG_OPTION_COUNT; ++k)
         if (values[k]) ok = vg_read_option(c, &vg_options[k], values[k], d);
+    for (k = 0; k < VG_OPTION_COUNT && vg_options[k].offset != offsetof(verve_agent_desc, sensor_grouping); ++k) {}
+    if (ok) ok = vg_check_sensor_groups(c, d, k < VG_OPTION_COUNT && values[k] != NULL);
     vg_core->godot_dictionary_destroy(&dict);
     return ok;
 }
@@ -170,6 +249,28 @@ static godot_variant vg_option_variant(const vg_option* o, const verve_agent_des
         for (i = 0; i < n; ++i) {
             godot_variant e = o->kind == VG_CIRCULAR ? vg_variant_bool(d->continuous_sensor_circular[i])
                                                      : vg_variant_int(d->discrete_sensor_values[i]);
+            vg_core->godot_array_append(&list, &e);
+            vg_core->godot_variant_destroy(&e);
+        }
+        vg_core->godot_variant_new_array(&v, &list);
+        vg_core->godot_array_destroy(&list);
+        return v;
+    case VG_SENSOR_GROUPS:
+        vg_core->godot_array_new(&list);
+        n = d->num_sensor_groups <= VERVE_MAX_SENSOR_GROUPS ? d->num_sensor_groups : 0;
+        for (i = 0; i < n; ++i) {
+            godot_array group;
+            godot_variant e;
+            uint32_t s;
+            vg_core->godot_array_new(&group);
+            for (s = 0; s < 64; ++s) {
+                if (!(d->sensor_groups[i] & ((uint64_t)1 << s))) continue;
+                e = vg_variant_int(s);
+                vg_core->godot_array_append(&group, &e);
+                vg_core->godot_variant_destroy(&e);
+            }
+            vg_core->godot_variant_new_array(&e, &group);
+            vg_core->godot_array_destroy(&group);
             vg_core->godot_array_append(&list, &e);
             vg_core->godot_variant_destroy(&e);
         }
