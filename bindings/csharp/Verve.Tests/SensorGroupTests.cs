@@ -170,6 +170,30 @@ namespace Verve.Tests
         }
 
         [Fact]
+        public void TheDocsTwelveSensorNpcs()
+        {
+            // docs/csharp.md, "Many sensors", as written there.
+            float reward = 0f, dt = 0.1f;
+            float[] readings = Readings(1, 12);
+            var options = new AgentOptions { Actions = 4 };
+            for (int i = 0; i < 12; i++) options.AddContinuousSensor();
+            using var npc = new Agent(options);          // Auto: 12 single-sensor lattices and 11 pairs
+            int action = npc.Update(reward, null, readings, dt);   // readings: 12 floats in [-1, 1]
+
+            for (int i = 0; i < 12; i++) options.AddSensorGroup(i);        // each sensor alone
+            for (int i = 0; i < 7; i++) options.AddSensorGroup(i, i + 1);  // neighbouring rays
+            options.AddSensorGroup(7, 0);                                  // the ring closes: ray 7 beside ray 0
+            options.AddSensorGroup(8, 9);                                  // bearing with distance
+            using var custom = new Agent(options);       // Grouping is now SensorGrouping.Custom
+
+            Assert.InRange(action, 0, 3);
+            Assert.Equal(SensorGrouping.Auto, npc.Options.Grouping);
+            Assert.Equal(SensorGrouping.Custom, custom.Options.Grouping);
+            Assert.Equal(12 + 7 + 2, custom.Options.SensorGroups.Count);
+            Assert.InRange(custom.Update(reward, null, readings, dt), 0, 3);
+        }
+
+        [Fact]
         public void AnUnknownGroupingIsTheLibrarysToRefuse()
         {
             var o = Npc(2);

@@ -112,6 +112,27 @@ func test_saves_and_brains():
 	grouped.queue_free()
 
 
+# docs/godot.md, "Many sensors", as written there.
+func test_doc_npcs():
+	var agent = VerveAgent.new()
+	var circular = []
+	for i in 12:
+		circular.append(false)
+	check(agent.create({"continuous_sensor_circular": circular, "actions": 4}), agent.get_last_error())  # "auto": 12 single lattices, 11 pairs
+	check(agent.get_options()["grouping"] == "auto", "the doc's NPC is auto")
+	var groups = []
+	for i in 12:
+		groups.append([i])          # each sensor alone
+	for i in 7:
+		groups.append([i, i + 1])   # neighbouring rays
+	groups.append([7, 0])           # the ring closes: ray 7 beside ray 0
+	groups.append([8, 9])           # bearing with distance
+	check(agent.create({"continuous_sensor_circular": circular, "actions": 4, "sensor_groups": groups}), agent.get_last_error())  # "custom"
+	check(agent.get_options()["grouping"] == "custom" and agent.get_options()["sensor_groups"].size() == 12 + 7 + 2,
+		"the doc's custom NPC: %s" % [agent.get_options()["sensor_groups"]])
+	check(agent.update(0.0, [], readings(1, 12), 0.1) in [0, 1, 2, 3], "the doc's custom NPC acts")
+
+
 func test_refusals():
 	var agent = new_agent(npc(4))
 	var before = agent.get_options().hash()
@@ -147,6 +168,7 @@ func _init():
 	test_auto_and_joint()
 	test_custom()
 	test_saves_and_brains()
+	test_doc_npcs()
 	test_refusals()
 	report("verve godot sensor groups")
 	quit()

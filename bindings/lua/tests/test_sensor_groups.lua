@@ -110,6 +110,25 @@ T.check("a brain takes groups too", function()
   brain:close()
 end)
 
+T.check("docs/lua.md's 12-sensor NPCs, as written there", function()
+  local reward, dt, readings = 0, 0.1, readings(1, 12)
+  local npc = verve.agent { continuous = 12, actions = 4 }   -- "auto": 12 single lattices, 11 pairs
+  local action = npc:update(reward, { continuous = readings }, dt)   -- readings: 12 numbers in [-1, 1]
+  local groups = {}
+  for i = 1, 12 do groups[#groups + 1] = { i } end         -- each sensor alone
+  for i = 1, 7 do groups[#groups + 1] = { i, i + 1 } end   -- neighbouring rays
+  groups[#groups + 1] = { 8, 1 }                            -- the ring closes: ray 8 beside ray 1
+  groups[#groups + 1] = { 9, 10 }                           -- bearing with distance
+  local custom = verve.agent { continuous = 12, actions = 4, sensor_groups = groups }  -- "custom"
+  assert(action >= 1 and action <= 4)
+  assert(npc:descriptor().grouping == "auto" and custom:descriptor().grouping == "custom")
+  assert(#custom:descriptor().sensor_groups == 12 + 7 + 2)
+  local a = custom:update(reward, { continuous = readings }, dt)
+  assert(a >= 1 and a <= 4)
+  npc:close()
+  custom:close()
+end)
+
 T.check("refusals name the group and count sensors from 1", function()
   local function bad(extra, pattern, n)
     T.expect_error(pattern, verve.agent, npc(n or 4, extra))

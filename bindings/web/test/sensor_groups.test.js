@@ -88,6 +88,24 @@ test('a brain takes groups too', () => {
   brain.dispose();
 });
 
+test("docs/web.md's 12-sensor NPCs, as written there", () => {
+  const npc = verve.createAgent({ continuous: 12, actions: 4 });   // 'auto': 12 single lattices, 11 pairs
+
+  const groups = [];
+  for (let i = 0; i < 12; ++i) groups.push([i]);          // each sensor alone
+  for (let i = 0; i < 7; ++i) groups.push([i, i + 1]);    // neighbouring rays
+  groups.push([7, 0], [8, 9]);                            // the ring closes; bearing with distance
+  const custom = verve.createAgent({ continuous: 12, actions: 4, sensorGroups: groups });  // 'custom'
+
+  assert.equal(npc.descriptor().grouping, 'auto');
+  assert.equal(custom.descriptor().grouping, 'custom');
+  assert.equal(custom.descriptor().sensorGroups.length, 12 + 7 + 2);
+  for (const a of [npc, custom]) {
+    assert.ok(a.update(0, { continuous: readings(1, 12) }, 0.1) < 4);
+    a.dispose();
+  }
+});
+
 test('refusals name the group and the sensor', () => {
   const bad = [
     [{ grouping: 'pairs' }, /grouping must be one of 'auto', 'joint', 'custom'/],
