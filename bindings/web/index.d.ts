@@ -57,7 +57,7 @@ export interface AgentDescriptor {
   maxRbfs?: number | bigint;
   /** > 0: actor weights stay within ±bound; 0: unbounded (default). */
   policyWeightBound?: number;
-  /** What the agent sets for itself: bits 1 (horizon), 2 (actor scale); default 3, 0: every setting as given. */
+  /** What the agent sets for itself: bits 1 (horizon), 2 (actor scale), 4 (0.1 s decisions), 8 (habit ceiling); default 15, 0: every setting as given. */
   adaptation?: number | bigint;
   /**
    * Which continuous sensors share an RBF lattice. 'auto' (default): one lattice up to 4 sensors,
