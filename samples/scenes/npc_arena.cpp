@@ -61,12 +61,7 @@ NpcArena::NpcArena(const NpcArenaConfig& config, std::uint64_t seed, const Agent
 
         AgentDescriptor d = agents;
         d.seed = static_cast<std::uint64_t>(random_.uniform(0, 0x1.0p53));
-        if (!config.sharedBrain) {
-            agents_.emplace_back(d);
-            continue;
-        }
-        if (!brain) brain = std::make_unique<Brain>(d);
-        agents_.push_back(brain->makeBody());
+        addNpcAgent(agents_, brain, d, config.sharedBrain);
     }
     for (std::uint32_t i = 0; i < config.food; ++i) food_.push_back(freeSpot());
     rewards_.assign(config.npcs, 0.0f);

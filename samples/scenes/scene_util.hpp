@@ -2,8 +2,11 @@
 #pragma once
 #include <cmath>
 #include <cstdint>
+#include <memory>
 #include <string>
+#include <vector>
 
+#include "verve/brain.hpp"
 #include "verve/error.hpp"
 
 namespace verve::scenes {
@@ -24,6 +27,17 @@ inline void checkAction(const std::string& scene, std::uint32_t action, std::uin
         throw Error(ErrorCode::InvalidArgument, scene + ": action " + std::to_string(action) +
                                                     " out of range (0.." +
                                                     std::to_string(numActions - 1) + ")");
+}
+
+// The next NPC's agent: its own, or (shared) a body of one brain made from the first NPC's
+// descriptor; the bodies keep the brain alive.
+inline void addNpcAgent(std::vector<Agent>& agents, std::unique_ptr<Brain>& brain, const AgentDescriptor& d, bool shared) {
+    if (!shared) {
+        agents.emplace_back(d);
+        return;
+    }
+    if (!brain) brain = std::make_unique<Brain>(d);
+    agents.push_back(brain->makeBody());
 }
 
 }  // namespace verve::scenes
