@@ -93,6 +93,10 @@ doc docs/performance.md 'build/bench/verve_bench --benchmark_repetitions=3 --ben
 doc docs/performance.md './scripts/bench_crowd.sh' './scripts/bench_crowd.sh --benchmark_filter=tiny/100/'
 doc docs/experiments.md 'cmake -S . -B build -DCMAKE_BUILD_TYPE=Release && cmake --build build -j2'
 doc docs/experiments.md 'build/samples/tasks/verve-experiments list'
+doc docs/experiments.md 'build/bench/verve_bench --benchmark_filter=Sensors' \
+  'build/bench/verve_bench --benchmark_filter=Sensors --benchmark_min_time=0.01'
+doc docs/experiments.md 'build/samples/tasks/verve-experiments run signaled-hot-plate-1d-14-distractors --runs 20 --trials 301 --defaults' \
+  'build/samples/tasks/verve-experiments run signaled-hot-plate-1d-14-distractors --runs 2 --trials 20 --defaults'
 ctest_doc docs/experiments.md 'ctest --test-dir build -L learning'
 doc docs/experiments.md 'build/samples/tasks/verve-experiments run cue-change --csv cue-after.csv' \
   "build/samples/tasks/verve-experiments run cue-change --csv $scratch/cue-after.csv"
