@@ -103,6 +103,7 @@ typedef enum verve_sensor_kind {
 #define VERVE_MAX_DISCRETE_SENSORS 16
 #define VERVE_MAX_CONTINUOUS_SENSORS 16
 #define VERVE_MAX_SENSOR_GROUPS 64
+#define VERVE_MAX_ACTION_BRANCHES 8
 
 typedef struct verve_agent verve_agent; /* opaque */
 typedef struct verve_brain verve_brain; /* opaque: a learner shared by many bodies (agents) */
@@ -153,6 +154,14 @@ typedef struct verve_agent_desc {
     uint32_t num_sensor_groups; /* CUSTOM: how many entries of sensor_groups are used (else 0) */
     uint64_t sensor_groups[VERVE_MAX_SENSOR_GROUPS]; /* CUSTOM: bit i set = continuous sensor i is in
                                                         the group; every sensor in at least one */
+
+    /* V6: action branches (docs/algorithm.md, "Action branches"): several choices on every step,
+       e.g. {3, 3, 2} for move x turn x use, each by an actor head of its own. An action is then the
+       combined index a0 + n0 * (a1 + n1 * (a2 + ...)): verve_agent_split_action and
+       verve_agent_join_action convert. Planning needs one action set. */
+    uint32_t num_action_branches; /* 0 (default): one set of num_actions actions */
+    uint32_t action_branches[VERVE_MAX_ACTION_BRANCHES]; /* choices per branch (>= 1 each); num_actions
+                                                            is then 0 (set to their product) or it */
 } verve_agent_desc;
 
 /* verve_agent_desc.adaptation bits (docs/algorithm.md, "Learning at defaults"). */
@@ -167,13 +176,14 @@ typedef struct verve_agent_desc {
 
 /* The sizes of verve_agent_desc a library accepts in struct_size: each release's full struct.
  * V1 ended after `seed` (no planning fields); V2 after discrete_prediction; V3 after
- * policy_weight_bound; V4 after adaptation; V5 is the current struct. Fields beyond a smaller
+ * policy_weight_bound; V4 after adaptation; V5 after sensor_groups; V6 is the current struct. Fields beyond a smaller
  * struct_size take their defaults. Any other size is refused. */
 #define VERVE_AGENT_DESC_SIZE_V1 ((uint32_t)offsetof(verve_agent_desc, planning))
 #define VERVE_AGENT_DESC_SIZE_V2 ((uint32_t)offsetof(verve_agent_desc, max_rbfs))
 #define VERVE_AGENT_DESC_SIZE_V3 ((uint32_t)offsetof(verve_agent_desc, adaptation))
 #define VERVE_AGENT_DESC_SIZE_V4 ((uint32_t)offsetof(verve_agent_desc, sensor_grouping))
-#define VERVE_AGENT_DESC_SIZE_V5 ((uint32_t)sizeof(verve_agent_desc))
+#define VERVE_AGENT_DESC_SIZE_V5 ((uint32_t)offsetof(verve_agent_desc, num_action_branches))
+#define VERVE_AGENT_DESC_SIZE_V6 ((uint32_t)sizeof(verve_agent_desc))
 
 typedef struct verve_agent_stats {
     uint32_t struct_size;           /* VERVE_AGENT_STATS_SIZE_V1 or _V2 (sizeof): only that many bytes are written */
@@ -254,7 +264,8 @@ VERVE_API verve_result VERVE_CALL verve_agent_update(verve_agent* agent, float r
     float dt, uint32_t* out_action);
 /* verve_agent_update choosing only among the actions the mask allows this step: action_mask holds
  * n_actions flags (the agent's num_actions), 1 allowed, 0 not, at least one 1. A masked action is
- * never chosen and gets no credit. */
+ * never chosen and gets no credit. With action branches, one flag per choice of each branch, branch
+ * after branch (n_actions = the branches' sizes summed), at least one 1 in each branch. */
 VERVE_API verve_result VERVE_CALL verve_agent_update_masked(verve_agent* agent, float reward,
     const int32_t* discrete, uint32_t n_discrete, const float* continuous, uint32_t n_continuous,
     float dt, const uint8_t* action_mask, uint32_t n_actions, uint32_t* out_action);
@@ -285,13 +296,23 @@ VERVE_API verve_result VERVE_CALL verve_agent_get_learning(const verve_agent* ag
 /* out->struct_size must be set (verve_agent_desc_init does it); only that many bytes are written. */
 VERVE_API verve_result VERVE_CALL verve_agent_get_desc(const verve_agent* agent, verve_agent_desc* out);
 
+/* Action branches: the choice of each branch within a combined action (out_choices: n_branches
+ * values, n_branches = the agent's num_action_branches, or 1 with one action set), and the combined
+ * action of one choice per branch. A wrong count, an action or a choice out of range is refused. */
+VERVE_API verve_result VERVE_CALL verve_agent_split_action(const verve_agent* agent, uint32_t action,
+    uint32_t* out_choices, uint32_t n_branches);
+VERVE_API verve_result VERVE_CALL verve_agent_join_action(const verve_agent* agent, const uint32_t* choices,
+    uint32_t n_branches, uint32_t* out_action);
+
 /* How verve_agent_update picks its action: a verve_action_selection. Per agent, not saved. */
 VERVE_API verve_result VERVE_CALL verve_agent_set_action_selection(verve_agent* agent, uint32_t mode);
 VERVE_API verve_result VERVE_CALL verve_agent_get_action_selection(const verve_agent* agent, uint32_t* out_mode);
 
 /* ---- read-outs -------------------------------------------------------------------------- */
 /* The policy's probability of each action at the latest update (count = num_actions floats summing
- * to 1; 0 for masked actions): what VERVE_ACTION_SAMPLE drew from. Uniform before any update. */
+ * to 1; 0 for masked actions): what VERVE_ACTION_SAMPLE drew from. Uniform before any update. With
+ * action branches, each branch's choices in turn (count = the branches' sizes summed), each branch's
+ * summing to 1. */
 VERVE_API verve_result VERVE_CALL verve_agent_get_action_probabilities(const verve_agent* agent, float* out,
     uint32_t count);
 VERVE_API verve_result VERVE_CALL verve_agent_get_value(const verve_agent* agent, float* out_value);

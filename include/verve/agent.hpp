@@ -33,7 +33,8 @@ enum class ActionSelection : std::uint8_t {
     Greedy = 1,  // always the most probable action: deterministic play for a shipped NPC
 };
 
-// Which actions the agent may choose on one step: `count` flags (numActions), 1 allowed, 0 not.
+// Which actions the agent may choose on one step: `count` flags (numActions), 1 allowed, 0 not;
+// with action branches one flag per choice of each branch (AgentDescriptor::actionChoices()).
 struct ActionMask {
     const std::uint8_t* allowed = nullptr;
     std::size_t count = 0;
@@ -100,7 +101,8 @@ public:
     void setActionSelection(ActionSelection mode);
     ActionSelection actionSelection() const;
     // The policy's probability of each action at the latest update (numActions values, summing to
-    // 1; 0 for masked actions), what Sample mode drew from; before any update, uniform.
+    // 1; 0 for masked actions), what Sample mode drew from; before any update, uniform. With action
+    // branches, each branch's choices in turn (actionChoices() values), each branch summing to 1.
     const std::vector<float>& actionProbabilities() const;
 
     const AgentDescriptor& descriptor() const;

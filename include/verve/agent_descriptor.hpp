@@ -64,6 +64,7 @@ struct DescriptorLimits {
     static constexpr std::uint64_t kDefaultMaxRbfs = 1000000;
     static constexpr std::uint64_t kMaxRbfs = 0xFFFFFFFEull;  // feature indices are 32-bit; also "unlimited"
     static constexpr std::uint32_t kMaxSensorGroups = 64;
+    static constexpr std::uint32_t kMaxActionBranches = 8;
 };
 
 // Which names validate() gives the fields in its messages: the C++ members or the C ABI's.
@@ -78,6 +79,13 @@ struct AgentDescriptor {
     std::vector<ContinuousSensor> continuousSensors;  // each reads a value in [-1, 1]
     std::uint32_t resolution = 10;                    // RBFs across [-1, 1]; width sigma = 2 / resolution
     std::uint32_t numActions = 2;
+    // Action branches (docs/algorithm.md, "Action branches"): several independent choices made on
+    // every step, e.g. {3, 3, 2} for move x turn x use, each by an actor head of its own, all
+    // credited by the one TD error. Empty: one set of numActions actions. With branches numActions
+    // is their product and an action is the combined index a0 + n0 * (a1 + n1 * (a2 + ...)):
+    // setActionBranches() sets both, branchChoice() and actionOf() convert. Masks and the policy's
+    // probabilities then hold one flag or value per choice of each branch, branch after branch.
+    std::vector<std::uint32_t> actionBranches;
     RbfAllocation allocation = RbfAllocation::Dynamic;
     SensorGrouping grouping = SensorGrouping::Auto;
     // Custom grouping: one lattice per entry, a bitmask of continuous sensors (bit i: sensor i).
@@ -129,6 +137,17 @@ struct AgentDescriptor {
         continuousSensors.push_back(ContinuousSensor{circular});
         return *this;
     }
+    // actionBranches = sizes, numActions = their product (validate() refuses a product beyond
+    // DescriptorLimits::kMaxActions).
+    AgentDescriptor& setActionBranches(std::vector<std::uint32_t> sizes);
+    // Flags in an action mask, values in the policy's probabilities: the sum of the branches'
+    // sizes, or numActions with one action set.
+    std::uint32_t actionChoices() const;
+    // Branch `branch`'s choice within the combined `action` (one action set: the action itself).
+    std::uint32_t branchChoice(std::uint32_t action, std::size_t branch) const;
+    // The combined action of one choice per branch (`count` = the number of branches, or 1 with one
+    // action set). Throws Error(InvalidArgument) for a wrong count or a choice out of range.
+    std::uint32_t actionOf(const std::uint32_t* choices, std::size_t count) const;
 
     // Throws verve::Error(InvalidArgument) naming the first bad field, or the fields whose derived
     // size (lattice, model outputs, weights per RBF) exceeds DescriptorLimits.

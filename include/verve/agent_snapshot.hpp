@@ -11,7 +11,8 @@
 namespace verve {
 
 struct AgentSnapshot {
-    static constexpr std::uint32_t kFormatVersion = 2;  // 2: sensor groups (written only by saves that have them)
+    // 2: sensor groups, 3: action branches (each written only by saves that have them).
+    static constexpr std::uint32_t kFormatVersion = 3;
 
     AgentDescriptor descriptor;
     bool learning = true;

@@ -3,6 +3,7 @@
 #include "tasks/bandit.hpp"
 #include "tasks/corridor.hpp"
 #include "tasks/cue_change.hpp"
+#include "tasks/branched_plate.hpp"
 #include "tasks/distractors.hpp"
 #include "tasks/curiosity_grid.hpp"
 #include "tasks/hot_plate.hpp"
@@ -32,6 +33,10 @@ TaskFactory maze(MazeLayout (*layout)(), Sensors sensors, bool planning) {
 
 TaskFactory distractors(std::uint32_t count) {
     return [=](std::uint64_t) { return std::make_unique<HotPlateAmongDistractors>(count); };
+}
+
+TaskFactory branchedPlate(bool branches) {
+    return [=](std::uint64_t) { return std::make_unique<BranchedPlate>(branches); };
 }
 
 TaskFactory curiosityGrid(CuriosityAgent agent) {
@@ -69,6 +74,10 @@ std::vector<TaskInfo> makeRegistry() {
          distractors(6), 100, 301, Metric::Steps},
         {"signaled-hot-plate-1d-14-distractors", "1D signaled hot plate, position + continuous signal + 14 distractors",
          distractors(14), 100, 301, Metric::Steps},
+        {"signaled-hot-plate-2d-branches", "2D signaled hot plate, move x move x pace as 3 action branches (3x3x2)",
+         branchedPlate(true), 100, 301, Metric::Steps},
+        {"signaled-hot-plate-2d-18-moves", "2D signaled hot plate, the same 18 combined moves as one action set",
+         branchedPlate(false), 100, 301, Metric::Steps},
         {"maze1", "2D maze #1 (shortest path 22), discrete position", maze(maze1Layout, D, false), 50, 100,
          Metric::Steps},
         {"maze1-continuous", "2D maze #1, continuous position (resolution 15)", maze(maze1Layout, C, false), 50, 100,

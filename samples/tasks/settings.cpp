@@ -12,6 +12,7 @@ AgentDescriptor atLibraryDefaults(const AgentDescriptor& task) {
     d.grouping = task.grouping;  // which sensors belong together describes the sensors
     d.sensorGroups = task.sensorGroups;
     d.numActions = task.numActions;
+    d.actionBranches = task.actionBranches;  // how the actions are made up describes the actions
     d.seed = task.seed;
     d.planning = task.planning;
     d.curiosity = task.curiosity;

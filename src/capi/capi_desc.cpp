@@ -14,8 +14,8 @@ void requireKnownSize(std::uint32_t size) {
     if (!isKnownDescSize(size)) {
         refuse("struct_size " + std::to_string(size) + " is not a verve_agent_desc size this library knows (" +
                std::to_string(VERVE_AGENT_DESC_SIZE_V1) + ", " + std::to_string(VERVE_AGENT_DESC_SIZE_V2) + ", " +
-               std::to_string(VERVE_AGENT_DESC_SIZE_V3) + ", " + std::to_string(VERVE_AGENT_DESC_SIZE_V4) + " or " +
-               std::to_string(VERVE_AGENT_DESC_SIZE_V5) +
+               std::to_string(VERVE_AGENT_DESC_SIZE_V3) + ", " + std::to_string(VERVE_AGENT_DESC_SIZE_V4) + ", " +
+               std::to_string(VERVE_AGENT_DESC_SIZE_V5) + " or " + std::to_string(VERVE_AGENT_DESC_SIZE_V6) +
                "); fill the struct with verve_agent_desc_init");
     }
 }
@@ -28,7 +28,7 @@ void requireFlag(std::uint32_t value, const std::string& name) {
 
 bool isKnownDescSize(std::uint32_t size) noexcept {
     return size == VERVE_AGENT_DESC_SIZE_V1 || size == VERVE_AGENT_DESC_SIZE_V2 || size == VERVE_AGENT_DESC_SIZE_V3 ||
-           size == VERVE_AGENT_DESC_SIZE_V4 || size == VERVE_AGENT_DESC_SIZE_V5;
+           size == VERVE_AGENT_DESC_SIZE_V4 || size == VERVE_AGENT_DESC_SIZE_V5 || size == VERVE_AGENT_DESC_SIZE_V6;
 }
 
 // The full current struct for a descriptor: the one place the two layouts meet field by field.
@@ -66,6 +66,8 @@ static verve_agent_desc fullDesc(const AgentDescriptor& in) noexcept {
     d.sensor_grouping = static_cast<std::uint32_t>(in.grouping);
     d.num_sensor_groups = static_cast<std::uint32_t>(in.sensorGroups.size());  // validated: <= VERVE_MAX_SENSOR_GROUPS
     for (std::size_t i = 0; i < in.sensorGroups.size() && i < VERVE_MAX_SENSOR_GROUPS; ++i) d.sensor_groups[i] = in.sensorGroups[i];
+    d.num_action_branches = static_cast<std::uint32_t>(in.actionBranches.size());  // validated: <= VERVE_MAX_ACTION_BRANCHES
+    for (std::size_t i = 0; i < in.actionBranches.size() && i < VERVE_MAX_ACTION_BRANCHES; ++i) d.action_branches[i] = in.actionBranches[i];
     return d;
 }
 
@@ -139,6 +141,13 @@ AgentDescriptor toDescriptor(const verve_agent_desc& in) {
     }
     out.grouping = static_cast<SensorGrouping>(d.sensor_grouping);
     out.sensorGroups.assign(d.sensor_groups, d.sensor_groups + d.num_sensor_groups);
+    if (d.num_action_branches > VERVE_MAX_ACTION_BRANCHES) {
+        refuse("num_action_branches is " + std::to_string(d.num_action_branches) + ", at most " +
+               std::to_string(VERVE_MAX_ACTION_BRANCHES));
+    }
+    out.actionBranches.assign(d.action_branches, d.action_branches + d.num_action_branches);
+    // num_actions 0 with branches: their product (validate() refuses any other number but it).
+    if (!out.actionBranches.empty() && d.num_actions == 0) out.setActionBranches(out.actionBranches);
     out.validate(FieldNaming::CAbi);
     return out;
 }

@@ -30,7 +30,7 @@ std::uint32_t stepsWithinTimeConstant(float dt, float tau) {
 
 core::WeightLayout weightLayoutFor(const AgentDescriptor& desc) {
     core::WeightLayout layout;
-    layout.numActions = desc.numActions;
+    layout.numActions = core::ActionBranches::of(desc).columns;
     layout.modelColumns = core::PredictiveModel::columnsFor(desc);
     return layout;
 }
@@ -48,14 +48,15 @@ Agent::Impl::Impl(std::shared_ptr<BrainState> shared, std::uint64_t seed)
       rep(brain->rep),
       weights(brain->weights),
       rng(seed),
-      td(desc.numActions, desc.traceThreshold),
+      td(core::ActionBranches::of(desc), desc.traceThreshold),
       model(desc),
       planner(desc) {
     previousDiscrete.assign(desc.discreteSensors.size(), 0);
     previousContinuous.assign(desc.continuousSensors.size(), 0.0f);
     normalized.reserve(desc.continuousSensors.size());
     probabilities.reserve(td.traceStride());  // chooseAction's scratch: one per trace component
-    probabilities.assign(desc.numActions, 1.0f / static_cast<float>(desc.numActions));
+    probabilities.assign(td.numActions(), 0.0f);
+    recordProbabilities(nullptr, true);  // uniform (in each branch)
     stats.rbfCount = rep.featureCount();
 }
 
@@ -141,19 +142,25 @@ void Agent::Impl::plan(const StepConstants& k, const std::uint8_t* allowed) {
 }
 
 void Agent::Impl::recordProbabilities(const std::uint8_t* allowed, bool uniform) {
-    float total = 0.0f;
-    for (float y : probabilities) total += y;
-    if (!uniform && total > 0.0f && std::isfinite(total)) {
-        for (float& p : probabilities) p /= total;
-        return;
+    const core::ActionBranches& branches = td.branches();
+    for (std::uint32_t b = 0; b < branches.count; ++b) {
+        float* p = probabilities.data() + branches.offset[b];
+        const std::uint8_t* flags = allowed == nullptr ? nullptr : allowed + branches.offset[b];
+        const std::uint32_t n = branches.size[b];
+        float total = 0.0f;
+        for (std::uint32_t a = 0; a < n; ++a) total += p[a];
+        if (!uniform && total > 0.0f && std::isfinite(total)) {
+            for (std::uint32_t a = 0; a < n; ++a) p[a] /= total;
+            continue;
+        }
+        // A hopeless state, or activations that were not finite: the choice was uniform among the allowed.
+        float count = 0.0f;
+        for (std::uint32_t a = 0; a < n; ++a) {
+            p[a] = core::actionAllowed(flags, a) ? 1.0f : 0.0f;
+            count += p[a];
+        }
+        for (std::uint32_t a = 0; a < n; ++a) p[a] /= count;
     }
-    // A hopeless state, or activations that were not finite: the choice was uniform among the allowed.
-    float count = 0.0f;
-    for (std::size_t a = 0; a < probabilities.size(); ++a) {
-        probabilities[a] = core::actionAllowed(allowed, static_cast<std::uint32_t>(a)) ? 1.0f : 0.0f;
-        count += probabilities[a];
-    }
-    for (float& p : probabilities) p /= count;
 }
 
 void Agent::Impl::prefetch(unsigned stage) const noexcept {
@@ -316,7 +323,9 @@ std::uint32_t Agent::Impl::step(float reward, ObservationView obs, float dt, Act
     if (demonstrated != nullptr) {
         // The demonstrator's action stands for the agent's own (core/demonstration.hpp).
         action = *demonstrated;
-        if (s.learning) core::imitate(s.weights, s.current, action, mask.allowed, k.rates.policy, k.rates.policyRange);
+        if (s.learning) {
+            core::imitate(s.weights, s.current, action, s.td.branches(), mask.allowed, k.rates.policy, k.rates.policyRange);
+        }
     }
     if (s.learning && s.learnsFromRealSteps()) s.td.mark(s.current, action, s.rep.featureCount());
     s.endStep(obs, dt, action);
@@ -395,7 +404,7 @@ void Agent::teach(float praise) {
     }
     if (s.learning && praise != 0.0f) {
         const StepConstants k = s.constantsFor(s.lastDt);
-        s.teacher.credit(s.weights, praise, k.rates.policy, k.rates.policyRange);
+        s.teacher.credit(s.weights, praise, k.rates.policy, k.rates.policyRange, s.td.branches());
     }
     s.teacher.arm();  // after the credit: a refused or failed call changes nothing
 }

@@ -38,6 +38,8 @@ constexpr Field kPolicyWeightBound{"policyWeightBound", "policy_weight_bound"};
 constexpr Field kAdaptation{"adaptation", "adaptation"};
 constexpr Field kGrouping{"grouping", "sensor_grouping"};
 constexpr Field kSensorGroups{"sensorGroups", "sensor_groups"};
+constexpr Field kActionBranches{"actionBranches", "action_branches"};
+constexpr Field kPlanning{"planning", "planning"};
 
 class Validator {
 public:
@@ -110,6 +112,22 @@ void validateGroups(const AgentDescriptor& d, const Validator& v) {
     }
 }
 
+void validateBranches(const AgentDescriptor& d, const Validator& v) {
+    if (d.actionBranches.empty()) return;
+    v.requireAtMost(d.actionBranches.size(), Limits::kMaxActionBranches, "the number of " + v.name(kActionBranches));
+    std::uint64_t product = 1;
+    for (std::size_t i = 0; i < d.actionBranches.size(); ++i) {
+        v.require(d.actionBranches[i] >= 1, v.name(kActionBranches, i) + " must be at least 1");
+        product = std::min<std::uint64_t>(product * d.actionBranches[i], std::uint64_t(Limits::kMaxActions) + 1);
+    }
+    v.require(product <= Limits::kMaxActions, "the product of " + v.name(kActionBranches) + " (the combined actions) is above " +
+                                                  std::to_string(Limits::kMaxActions));
+    v.require(product == d.numActions, v.name(kNumActions) + " must be the product of " + v.name(kActionBranches) + " (" +
+                                           std::to_string(product) + "), got " + std::to_string(d.numActions));
+    // The model predicts per combined action; its planner chooses from one action set.
+    v.require(!d.planning, v.name(kPlanning) + " needs one action set (no " + v.name(kActionBranches) + ")");
+}
+
 // Every size derived from several fields at once: each alone may be in range while their
 // product asks for gigabytes or overflows 32 bits.
 void validateDerivedSizes(const AgentDescriptor& d, const Validator& v) {
@@ -140,6 +158,7 @@ void validateDerivedSizes(const AgentDescriptor& d, const Validator& v) {
 
 void AgentDescriptor::validate(FieldNaming naming) const {
     const Validator v(naming);
+    validateBranches(*this, v);  // first: a bad branch is what a wrong numActions would come from
     v.require(numActions >= 1, v.name(kNumActions) + " must be at least 1");
     v.requireAtMost(numActions, Limits::kMaxActions, v.name(kNumActions));
     v.requireAtMost(discreteSensors.size(), Limits::kMaxSensors, v.name(kDiscreteSensors));

@@ -166,7 +166,7 @@ void snapshotBrain(const BrainState& brain, AgentSnapshot& snap) {
     snap.horizonTrialSeconds = brain.horizon.meanTrialSeconds;
     snap.horizonTrials = brain.horizon.trials;
     snap.tdMeanSquare = brain.tdScale.meanSquare;
-    snap.traceStride = 1 + brain.desc.numActions;
+    snap.traceStride = 1 + core::ActionBranches::of(brain.desc).columns;
 }
 
 Agent::Agent(const AgentSnapshot& snapshot) : impl_(restoreAgent(snapshot)) {}

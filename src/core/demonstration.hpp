@@ -16,6 +16,7 @@
 #include <cstdint>
 #include <vector>
 
+#include "core/action_branches.hpp"
 #include "core/active_feature.hpp"
 #include "core/habit_bound.hpp"
 #include "core/weight_table.hpp"
@@ -24,8 +25,9 @@ namespace verve::core {
 
 // One imitation step at the features `phi` towards `action`: each allowed action's preference
 // x_b moves by rate * (t_b - sigmoid(x_b)) * phi_i at feature i (t_b: 1 for `action`, else 0),
-// kept within `range`. `allowed`: numActions flags, or nullptr for all.
-void imitate(WeightTable& w, const std::vector<ActiveFeature>& phi, std::uint32_t action, const std::uint8_t* allowed,
-             float rate, const PolicyRange& range);
+// kept within `range`; with branches, each branch's neurons towards its choice within the combined
+// `action`. `allowed`: one flag per actor column, or nullptr for all.
+void imitate(WeightTable& w, const std::vector<ActiveFeature>& phi, std::uint32_t action, const ActionBranches& branches,
+             const std::uint8_t* allowed, float rate, const PolicyRange& range);
 
 }  // namespace verve::core

@@ -4,6 +4,7 @@
 #include <cmath>
 #include <string>
 
+#include "core/action_branches.hpp"
 #include "verve/error.hpp"
 
 namespace verve::core {
@@ -23,16 +24,22 @@ void checkTimeStep(float dt) {
 
 void checkActionMask(const AgentDescriptor& desc, const std::uint8_t* allowed, std::size_t count) {
     if (allowed == nullptr) refuse("the action mask is NULL");
-    if (count != desc.numActions) {
+    if (count != desc.actionChoices()) {
         refuse("the action mask has " + std::to_string(count) + " flags, the agent has " +
-               std::to_string(desc.numActions) + " actions");
+               (desc.actionBranches.empty() ? std::to_string(desc.numActions) + " actions"
+                                            : std::to_string(desc.actionChoices()) + " choices in its action branches"));
     }
-    bool any = false;
     for (std::size_t a = 0; a < count; ++a) {
         if (allowed[a] > 1) refuse("action mask flag " + std::to_string(a) + " must be 0 or 1, got " + std::to_string(allowed[a]));
-        any = any || allowed[a] == 1;
     }
-    if (!any) refuse("the action mask allows no action (at least one flag must be 1)");
+    const ActionBranches branches = ActionBranches::of(desc);
+    for (std::uint32_t b = 0; b < branches.count; ++b) {
+        const std::uint8_t* flags = allowed + branches.offset[b];
+        if (std::find(flags, flags + branches.size[b], std::uint8_t{1}) != flags + branches.size[b]) continue;
+        refuse(branches.count == 1 ? std::string("the action mask allows no action (at least one flag must be 1)")
+                                   : "the action mask allows no choice of branch " + std::to_string(b) +
+                                         " (at least one of its flags must be 1)");
+    }
 }
 
 void checkDemonstratedAction(const AgentDescriptor& desc, std::uint32_t action, const std::uint8_t* allowed) {
@@ -40,8 +47,14 @@ void checkDemonstratedAction(const AgentDescriptor& desc, std::uint32_t action, 
         refuse("the demonstrated action " + std::to_string(action) + " is out of range (the agent has " +
                std::to_string(desc.numActions) + " actions)");
     }
-    if (allowed != nullptr && allowed[action] == 0) {
-        refuse("the demonstrated action " + std::to_string(action) + " is one the action mask forbids");
+    if (allowed == nullptr) return;
+    std::uint32_t column[ActionBranches::kMax];
+    const ActionBranches branches = ActionBranches::of(desc);
+    for (std::uint32_t b = 0, n = branches.columnsOf(action, column); b < n; ++b) {
+        if (allowed[column[b]] == 0) {
+            refuse("the demonstrated action " + std::to_string(action) + " is one the action mask forbids" +
+                   (branches.count == 1 ? std::string() : " (branch " + std::to_string(b) + ")"));
+        }
     }
 }
 

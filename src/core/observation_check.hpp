@@ -18,7 +18,8 @@ void checkObservation(const AgentDescriptor& desc, ObservationView obs);
 void normalizeObservation(const std::uint8_t* circular, ObservationView obs, std::vector<float>& normalized);
 void checkFinite(float value, const char* what);
 void checkTimeStep(float dt);
-// An action mask: numActions flags, each 0 or 1, at least one 1.
+// An action mask: actionChoices() flags (numActions, or one per choice of each branch), each 0 or 1,
+// at least one 1 in each branch.
 void checkActionMask(const AgentDescriptor& desc, const std::uint8_t* allowed, std::size_t count);
 // A demonstrated action: one of the agent's, and one `allowed` (a checked mask, or nullptr) allows.
 void checkDemonstratedAction(const AgentDescriptor& desc, std::uint32_t action, const std::uint8_t* allowed);

@@ -24,10 +24,10 @@ bool sameFeatures(const std::vector<ActiveFeature>& a, const std::vector<ActiveF
 
 }  // namespace
 
-Planner::Planner(const AgentDescriptor& desc) : td_(desc.numActions, desc.traceThreshold) {
+Planner::Planner(const AgentDescriptor& desc) : td_(ActionBranches::of(desc), desc.traceThreshold) {
     prediction_.discrete.resize(desc.discreteSensors.size());
     prediction_.continuous.resize(desc.continuousSensors.size());
-    activations_.reserve(std::size_t(desc.numActions) + 1);  // chooseAction's scratch: the trace stride
+    activations_.reserve(std::size_t(td_.numActions()) + 1);  // chooseAction's scratch: the trace stride
 }
 
 void Planner::reserve(std::uint32_t features) {

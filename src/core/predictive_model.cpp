@@ -3,6 +3,8 @@
 #include <algorithm>
 #include <cmath>
 
+#include "core/action_branches.hpp"
+
 namespace verve::core {
 namespace {
 
@@ -53,7 +55,7 @@ PredictiveModel::PredictiveModel(const AgentDescriptor& desc)
       tau_(desc.tauModel),
       activationSum_(std::pow(2.5f, static_cast<float>(desc.continuousSensors.size()))),
       invSigma2_(0.25f * static_cast<float>(desc.resolution) * static_cast<float>(desc.resolution)),
-      base_(WeightLayout::kPolicy + desc.numActions),
+      base_(WeightLayout::kPolicy + ActionBranches::of(desc).columns),
       numContinuous_(static_cast<std::uint32_t>(desc.continuousSensors.size())),
       discreteOutputs_(desc.planning ? static_cast<std::uint32_t>(discreteOutputsFor(desc)) : 0) {
     for (const auto& s : desc.continuousSensors) circular_.push_back(s.circular);

@@ -7,8 +7,9 @@
 
 namespace verve::core {
 
-TdLearner::TdLearner(std::uint32_t numActions, float traceThreshold)
-    : numActions_(numActions), stride_(1 + numActions), threshold_(traceThreshold), kernels_(&kernels()) {
+TdLearner::TdLearner(const ActionBranches& branches, float traceThreshold)
+    : branches_(branches), columns_(branches.columns), stride_(1 + branches.columns), threshold_(traceThreshold),
+      kernels_(&kernels()) {
     if (stride_ > kStackStride) step_.resize(stride_);
 }
 
@@ -40,48 +41,60 @@ std::uint32_t TdLearner::chooseFromSums(Rng& rng, std::vector<float>& activation
     // The value leaves the front.
     value = activations[WeightLayout::kValue];
     activations.erase(activations.begin());
+    const bool uniform = value <= uniformAtOrBelow;
+    if (branches_.count == 1) return chooseIn(rng, activations.data(), columns_, allowed, greedy, uniform);
+    std::uint32_t action = 0, scale = 1;
+    for (std::uint32_t b = 0; b < branches_.count; ++b) {
+        const std::uint32_t at = branches_.offset[b], n = branches_.size[b];
+        action += scale * chooseIn(rng, activations.data() + at, n, allowed == nullptr ? nullptr : allowed + at, greedy, uniform);
+        scale *= n;
+    }
+    return action;
+}
+
+std::uint32_t TdLearner::chooseIn(Rng& rng, float* y, std::uint32_t n, const std::uint8_t* allowed, bool greedy,
+                                  bool uniform) {
     // The largest preference, not the largest activation: sigmoids that saturate at 1 or
     // underflow to 0 tie in float where their preferences still differ.
-    std::uint32_t best = numActions_;
-    for (std::uint32_t a = 0; a < numActions_; ++a) {
-        if (actionAllowed(allowed, a) && (best == numActions_ || activations[a] > activations[best])) best = a;
+    std::uint32_t best = n;
+    for (std::uint32_t a = 0; a < n; ++a) {
+        if (actionAllowed(allowed, a) && (best == n || y[a] > y[best])) best = a;
     }
-    const float top = activations[best];
+    const float top = y[best];
     // Preferences below about -88 underflow every sigmoid to 0. There y_a = e^(x_a) to float
     // precision, so the roulette's proportions are e^(x_a - x_max): taken relative to the largest,
     // the choice still follows the preferences instead of turning uniform where float runs out.
     const bool underflowed = sigmoid(top) == 0.0f && std::isfinite(top);
     float total = 0.0f;
-    for (std::uint32_t a = 0; a < numActions_; ++a) {
-        float& y = activations[a];
-        if (!actionAllowed(allowed, a)) y = 0.0f;
-        else y = underflowed ? std::exp(y - top) : sigmoid(y);
-        total += y;
+    for (std::uint32_t a = 0; a < n; ++a) {
+        if (!actionAllowed(allowed, a)) y[a] = 0.0f;
+        else y[a] = underflowed ? std::exp(y[a] - top) : sigmoid(y[a]);
+        total += y[a];
     }
     if (greedy) return best;
-    if (!(total > 0.0f) || !std::isfinite(total) || value <= uniformAtOrBelow) return uniformAllowed(rng, allowed);
+    if (!(total > 0.0f) || !std::isfinite(total) || uniform) return uniformAllowed(rng, n, allowed);
     // Roulette (winner-take-all): each action in proportion to its neuron's activation.
     float pick = rng.uniform() * total;
-    for (std::uint32_t a = 0; a < numActions_; ++a) {
-        pick -= activations[a];
+    for (std::uint32_t a = 0; a < n; ++a) {
+        pick -= y[a];
         if (pick < 0.0f) return a;
     }
     // Rounding left a sliver: the last action with any activation takes it.
-    for (std::uint32_t a = numActions_; a-- > 0;) {
-        if (activations[a] > 0.0f) return a;
+    for (std::uint32_t a = n; a-- > 0;) {
+        if (y[a] > 0.0f) return a;
     }
     return best;
 }
 
-std::uint32_t TdLearner::uniformAllowed(Rng& rng, const std::uint8_t* allowed) const {
-    if (allowed == nullptr) return rng.below(numActions_);
+std::uint32_t TdLearner::uniformAllowed(Rng& rng, std::uint32_t n, const std::uint8_t* allowed) {
+    if (allowed == nullptr) return rng.below(n);
     std::uint32_t count = 0;
-    for (std::uint32_t a = 0; a < numActions_; ++a) count += actionAllowed(allowed, a);
+    for (std::uint32_t a = 0; a < n; ++a) count += actionAllowed(allowed, a);
     std::uint32_t pick = rng.below(count);
-    for (std::uint32_t a = 0; a < numActions_; ++a) {
+    for (std::uint32_t a = 0; a < n; ++a) {
         if (actionAllowed(allowed, a) && pick-- == 0) return a;
     }
-    return 0;  // unreachable: callers allow at least one action
+    return 0;  // unreachable: callers allow at least one action of each branch
 }
 
 bool TdLearner::stepFor(float delta, TdRates rates, float* step) const {
@@ -120,7 +133,7 @@ void TdLearner::trainAndDecay(WeightTable& w, float delta, TdRates rates, float 
 void TdLearner::clampPolicy(WeightTable& w, const std::uint32_t* rows, std::size_t count, PolicyRange range) const {
     for (std::size_t i = 0; i < count; ++i) {
         float* policy = w.row(rows[i]) + WeightLayout::kPolicy;
-        for (std::uint32_t a = 0; a < numActions_; ++a) policy[a] = range.clamp(policy[a]);
+        for (std::uint32_t a = 0; a < columns_; ++a) policy[a] = range.clamp(policy[a]);
     }
 }
 
@@ -135,6 +148,9 @@ void TdLearner::reserveLive(std::size_t more) {
 
 void TdLearner::mark(const std::vector<ActiveFeature>& phi, std::uint32_t action, std::uint32_t featureCount) {
     grow(featureCount);
+    // The trace column of each branch's choice (one action set: 1 + action).
+    std::uint32_t column[ActionBranches::kMax];
+    const std::uint32_t columns = branches_.columnsOf(action, column);
     // Below the threshold a trace would be dropped at the next decay anyway, and in a 4-sigma
     // neighbourhood most features are below it: a sequential, branch-free filter first, so that
     // only the features that mark anything touch the (randomly placed) trace rows.
@@ -163,9 +179,10 @@ void TdLearner::mark(const std::vector<ActiveFeature>& phi, std::uint32_t action
             count += e[0] == 0.0f;  // newly live (a live value trace is > 0)
             // Each max written as the instruction computes it (the larger, else the trace), and both
             // read before either is written: no branch on the data.
-            const float a = f.activation, v = e[0], p = e[1 + action];
+            const float a = f.activation, v = e[0], p = e[1 + column[0]];
             e[0] = a > v ? a : v;
-            e[1 + action] = a > p ? a : p;
+            e[1 + column[0]] = a > p ? a : p;
+            for (std::uint32_t b = 1; b < columns; ++b) e[1 + column[b]] = std::max(a, e[1 + column[b]]);
         }
         liveCount_ = count;
     }

@@ -1,8 +1,9 @@
 // TD(lambda) actor-critic on linear networks (thesis chapter 4, "Temporal Difference Learning").
 //
 // Critic: V(s) = sum_i w_i phi_i. Actor: one sigmoid neuron per action, y_a = 1 / (1 + e^-(sum_i w_ai phi_i)),
-// chosen by roulette in proportion to y_a. Both learn w += eta * delta * e. Traces are replacing
-// (e = max(e, phi); the actor's only for the chosen action) and decay by gamma * lambda. Traces are
+// chosen by roulette in proportion to y_a (with action branches, one roulette per branch over its
+// own neurons: core/action_branches.hpp). Both learn w += eta * delta * e. Traces are replacing
+// (e = max(e, phi); the actor's only for the chosen action of each branch) and decay by gamma * lambda. Traces are
 // stored per feature, and a live list names the features whose trace is above the threshold, so
 // work follows live traces, not the feature count. A feature's value trace is never below its
 // policy traces (both take the max with the same phi and decay alike), so it alone decides liveness.
@@ -13,6 +14,7 @@
 #include <limits>
 #include <vector>
 
+#include "core/action_branches.hpp"
 #include "core/habit_bound.hpp"
 #include "core/kernels.hpp"
 #include "core/rng.hpp"
@@ -90,16 +92,17 @@ inline bool actionAllowed(const std::uint8_t* allowed, std::uint32_t a) { return
 class TdLearner {
 public:
     static constexpr float kStepLimit = 1e12f;  // trainAndDecay's clamp on a weight's step (traces <= 1)
-    TdLearner(std::uint32_t numActions, float traceThreshold);
+    TdLearner(const ActionBranches& branches, float traceThreshold);
 
     // `ahead`, in these three: a batch's next agent, asked for as the kernels go (prefetch.hpp).
     float value(const WeightTable& w, const std::vector<ActiveFeature>& phi, PrefetchQueue* ahead = nullptr) const;
     // Roulette choice over the sigmoid action activations y_a (left in `activations`); one pass
-    // over the features also yields V(s) into `value`. `allowed` (numActions flags, or nullptr for
-    // all) zeroes the activation of every action not allowed, so it is never chosen; `greedy` takes
-    // the largest preference (the lowest index on ties) and draws no random number; otherwise a
-    // state whose V(s) is at or below `uniformAtOrBelow` chooses uniformly among the allowed actions.
-    // If every allowed y_a underflows, `activations` holds e^(x_a - max x) instead (their limit).
+    // over the features also yields V(s) into `value`. `allowed` (one flag per actor column, or
+    // nullptr for all) zeroes the activation of every action not allowed, so it is never chosen;
+    // `greedy` takes the largest preference (the lowest index on ties) and draws no random number;
+    // otherwise a state whose V(s) is at or below `uniformAtOrBelow` chooses uniformly among the
+    // allowed actions. If every allowed y_a underflows, `activations` holds e^(x_a - max x) instead
+    // (their limit). With branches, each branch chooses so in turn; the result is the combined action.
     std::uint32_t chooseAction(const WeightTable& w, const std::vector<ActiveFeature>& phi, Rng& rng,
                                std::vector<float>& activations, float& value,
                                const std::uint8_t* allowed = nullptr, bool greedy = false,
@@ -139,7 +142,8 @@ public:
         return static_cast<std::uint32_t>((std::uint64_t((feature >> 4) * 0x9E3779B1u) * parts) >> 32);
     }
 
-    // e = max(e, phi) for the critic; e_a = max(e_a, phi) for the chosen action's neuron.
+    // e = max(e, phi) for the critic; e_a = max(e_a, phi) for the chosen action's neuron (each
+    // branch's, for a combined action).
     void mark(const std::vector<ActiveFeature>& phi, std::uint32_t action, std::uint32_t featureCount);
     void clear();
     // Room for `features` features and a mark() of up to `active` features: mark() and
@@ -155,7 +159,8 @@ public:
         q.add(traces_.data(), traces_.size() * sizeof(float));
     }
 
-    std::uint32_t numActions() const { return numActions_; }
+    std::uint32_t numActions() const { return columns_; }  // actor columns (one action set: its actions)
+    const ActionBranches& branches() const { return branches_; }
     std::uint32_t liveCount() const { return liveCount_; }
     std::uint32_t traceStride() const { return stride_; }
     std::vector<std::uint32_t> liveFeatures() const;
@@ -169,14 +174,19 @@ private:
     // explains; returns whether the actor's range can be crossed (then the trained rows are clamped).
     bool stepFor(float delta, TdRates rates, float* step) const;
     void clampPolicy(WeightTable& w, const std::uint32_t* rows, std::size_t count, PolicyRange range) const;
+    // One branch's choice among its n activations y (allowed: its n flags or nullptr), as
+    // chooseFromSums describes.
+    static std::uint32_t chooseIn(Rng& rng, float* y, std::uint32_t n, const std::uint8_t* allowed, bool greedy,
+                                  bool uniform);
     // A hopeless state, or activations that are not finite: a uniform choice among the allowed.
-    std::uint32_t uniformAllowed(Rng& rng, const std::uint8_t* allowed) const;
+    static std::uint32_t uniformAllowed(Rng& rng, std::uint32_t n, const std::uint8_t* allowed);
     void grow(std::uint32_t featureCount);
     void reserveLive(std::size_t more);  // room for `more` live entries beyond liveCount_
     float* trace(std::uint32_t feature) { return traces_.data() + std::size_t(feature) * stride_; }
 
-    std::uint32_t numActions_;
-    std::uint32_t stride_;  // 1 + numActions: value trace, then one per action
+    ActionBranches branches_;
+    std::uint32_t columns_;  // actor columns: numActions, or the branches' sizes summed
+    std::uint32_t stride_;   // 1 + columns_: value trace, then one per actor column
     float threshold_;
     std::vector<float> traces_;         // per feature, stride_ values; zero unless live
     std::vector<std::uint32_t> live_;   // live features in its first liveCount_ entries (sized by need)

@@ -36,15 +36,19 @@ void TeacherMemory::compact() noexcept {
     pool_.erase(pool_.begin(), pool_.begin() + shift);
 }
 
-void TeacherMemory::credit(WeightTable& w, float praise, float rate, const PolicyRange& range) {
+void TeacherMemory::credit(WeightTable& w, float praise, float rate, const PolicyRange& range,
+                           const ActionBranches& branches) {
     forgetBefore(clock_ - kWindowSeconds);
     scratch_.clear();
-    scratch_.reserve(pool_.size());  // may throw: nothing has changed yet
+    scratch_.reserve(pool_.size() * branches.count);  // may throw: nothing has changed yet
     for (std::size_t i = first_; i < acts_.size(); ++i) {
         const Act& a = acts_[i];
+        std::uint32_t column[ActionBranches::kMax];
+        const std::uint32_t columns = branches.columnsOf(a.action, column);
         for (std::uint32_t k = 0; k < a.count; ++k) {
             const ActiveFeature& f = pool_[a.begin + k];
-            if (f.index < w.rows()) scratch_.push_back(Credit{f.index, a.action, f.activation});
+            if (f.index >= w.rows()) continue;
+            for (std::uint32_t b = 0; b < columns; ++b) scratch_.push_back(Credit{f.index, column[b], f.activation});
         }
     }
     // One credit per (feature, action): the largest activation, as a replacing trace.

@@ -17,6 +17,7 @@
 #include <cstdint>
 #include <vector>
 
+#include "core/action_branches.hpp"
 #include "core/active_feature.hpp"
 #include "core/habit_bound.hpp"
 #include "core/weight_table.hpp"
@@ -39,9 +40,10 @@ public:
     void reserve(std::size_t features);
     // The act chosen `dt` seconds after the previous one: `action` at the features `phi`.
     void remember(float dt, std::uint32_t action, const std::vector<ActiveFeature>& phi) noexcept;
-    // Moves the remembered acts' preferences by rate * praise * activation (kept within `range`).
-    // Allocates its scratch before changing any weight.
-    void credit(WeightTable& w, float praise, float rate, const PolicyRange& range);
+    // Moves the remembered acts' preferences by rate * praise * activation (kept within `range`);
+    // a combined action's, each branch's chosen neuron (core/action_branches.hpp). Allocates its
+    // scratch before changing any weight.
+    void credit(WeightTable& w, float praise, float rate, const PolicyRange& range, const ActionBranches& branches);
     std::size_t acts() const { return acts_.size() - first_; }
 
 private:

@@ -78,6 +78,7 @@ void transferPayload(Io& io, Snapshot& s, Flag& shortTerm, std::uint32_t version
     } else if constexpr (!std::is_const_v<Snapshot>) {
         s.descriptor.grouping = legacyGrouping(s.descriptor);
     }
+    if (version >= 7) io.list("action_branches", s.descriptor.actionBranches);
     io.flag("short_term_memory", shortTerm);
     if (!shortTerm) return;
     if (version >= 5) io.value("trial_seconds", s.trialSeconds);

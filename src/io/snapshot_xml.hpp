@@ -3,6 +3,7 @@
 //   <verve_agent format_version="1">
 //     <descriptor resolution=".." actions=".." allocation="dynamic|full" tau_value=".." ... seed=".." ...>
 //       <discrete_sensor values="20"/>  <continuous_sensor circular="false"/>
+//       <sensor_group sensors="3"/> (format 2)  <action_branch choices="3"/> (format 3)
 //     </descriptor>
 //     <state learning="true" steps=".." model_error=".." last_dt=".." rng="s0 s1 s2 s3"/>
 //     <features count="N"> <keys>..</keys> <centres>..</centres> </features>

@@ -128,6 +128,7 @@ AgentDescriptor readDescriptor(pugi::xml_node root) {
         d.grouping = legacyGrouping(d);
     }
     for (pugi::xml_node s : n.children("sensor_group")) d.sensorGroups.push_back(readUint64(s, "sensors"));
+    for (pugi::xml_node b : n.children("action_branch")) d.actionBranches.push_back(readUint32(b, "choices"));
     return d;
 }
 

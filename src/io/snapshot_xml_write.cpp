@@ -93,6 +93,7 @@ void writeDescriptor(pugi::xml_node root, const AgentDescriptor& d) {
         n.append_attribute("grouping").set_value(d.grouping == SensorGrouping::Joint ? "joint" : "custom");
     }
     for (auto g : d.sensorGroups) setNumber(n.append_child("sensor_group"), "sensors", g);
+    for (auto b : d.actionBranches) setNumber(n.append_child("action_branch"), "choices", std::uint64_t{b});
 }
 
 void writeState(pugi::xml_node root, const AgentSnapshot& s) {
@@ -154,7 +155,9 @@ std::string snapshotToXml(const AgentSnapshot& snapshot, bool includeTraces) {
     pugi::xml_document doc;
     pugi::xml_node root = doc.append_child(kRootElement);
     // Version 1 unless the save has sensor groups, which an older library must refuse.
-    setNumber(root, "format_version", std::uint64_t{snapshot.descriptor.sensorGroups.empty() ? 1u : AgentSnapshot::kFormatVersion});
+    // The oldest version that has what the save holds: older libraries still read what they can.
+    const std::uint64_t version = !snapshot.descriptor.actionBranches.empty() ? 3u : !snapshot.descriptor.sensorGroups.empty() ? 2u : 1u;
+    setNumber(root, "format_version", version);
     writeDescriptor(root, snapshot.descriptor);
     writeState(root, snapshot);
     writeFeatures(root, snapshot);

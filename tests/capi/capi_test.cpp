@@ -470,6 +470,82 @@ TEST(CApiDesc, SensorGroupsReachTheAgentAndAreValidated) {
     verve_agent_destroy(agent);
 }
 
+TEST(CApiDesc, ActionBranchesReachTheAgentAndAreValidated) {
+    verve_agent_desc d = smallDesc();
+    EXPECT_EQ(d.num_action_branches, 0u);
+    d.num_actions = 0;  // with branches: their product
+    d.num_action_branches = 3;
+    d.action_branches[0] = 3;
+    d.action_branches[1] = 3;
+    d.action_branches[2] = 2;
+    verve_agent* agent = nullptr;
+    ASSERT_EQ(verve_agent_create(&d, &agent), VERVE_OK) << verve_last_error();
+    verve_agent_desc back;
+    verve_agent_desc_default(&back);
+    ASSERT_EQ(verve_agent_get_desc(agent, &back), VERVE_OK);
+    EXPECT_EQ(back.num_actions, 18u);
+    ASSERT_EQ(back.num_action_branches, 3u);
+    EXPECT_EQ(back.action_branches[2], 2u);
+
+    // Masks and probabilities: one flag or value per choice of each branch (3 + 3 + 2).
+    const float obs[] = {0.2f};
+    const int32_t disc[] = {1};
+    const uint8_t mask[8] = {0, 0, 1, 1, 1, 1, 0, 1};
+    uint32_t action = 0;
+    ASSERT_EQ(verve_agent_update_masked(agent, 0.0f, disc, 1, obs, 1, 0.1f, mask, 8, &action), VERVE_OK) << verve_last_error();
+    uint32_t choices[3] = {9, 9, 9};
+    ASSERT_EQ(verve_agent_split_action(agent, action, choices, 3), VERVE_OK) << verve_last_error();
+    EXPECT_EQ(choices[0], 2u);
+    EXPECT_EQ(choices[2], 1u);
+    uint32_t joined = 99;
+    ASSERT_EQ(verve_agent_join_action(agent, choices, 3, &joined), VERVE_OK);
+    EXPECT_EQ(joined, action);
+    float p[8];
+    ASSERT_EQ(verve_agent_get_action_probabilities(agent, p, 8), VERVE_OK) << verve_last_error();
+    EXPECT_FLOAT_EQ(p[2], 1.0f);
+    EXPECT_FLOAT_EQ(p[6] + p[7], 1.0f);
+    EXPECT_EQ(verve_agent_get_action_probabilities(agent, p, 7), VERVE_ERROR_INVALID_ARGUMENT);
+    EXPECT_EQ(verve_agent_update_masked(agent, 0.0f, disc, 1, obs, 1, 0.1f, mask, 7, &action), VERVE_ERROR_INVALID_ARGUMENT);
+    const uint8_t noPace[8] = {1, 1, 1, 1, 1, 1, 0, 0};
+    EXPECT_EQ(verve_agent_update_masked(agent, 0.0f, disc, 1, obs, 1, 0.1f, noPace, 8, &action), VERVE_ERROR_INVALID_ARGUMENT);
+    EXPECT_NE(lastError().find("no choice of branch 2"), std::string::npos) << lastError();
+    EXPECT_EQ(verve_agent_split_action(agent, 18, choices, 3), VERVE_ERROR_INVALID_ARGUMENT);
+    EXPECT_EQ(verve_agent_split_action(agent, 0, choices, 2), VERVE_ERROR_INVALID_ARGUMENT);
+    EXPECT_EQ(verve_agent_split_action(agent, 0, nullptr, 3), VERVE_ERROR_INVALID_ARGUMENT);
+    const uint32_t tooFar[3] = {0, 3, 0};
+    EXPECT_EQ(verve_agent_join_action(agent, tooFar, 3, &joined), VERVE_ERROR_INVALID_ARGUMENT);
+    EXPECT_NE(lastError().find("choice 3 of branch 1 is out of range"), std::string::npos) << lastError();
+    verve_agent_destroy(agent);
+
+    struct Bad {
+        uint32_t actions, count, first;
+        const char* says;
+    };
+    for (const Bad& bad : {Bad{0, 9, 3, "num_action_branches is 9, at most 8"}, Bad{17, 3, 3, "num_actions must be the product"},
+                           Bad{0, 3, 0, "action_branches[0] must be at least 1"}, Bad{0, 3, 4096, "above 4096"}}) {
+        d.num_actions = bad.actions;
+        d.num_action_branches = bad.count;
+        d.action_branches[0] = bad.first;
+        agent = nullptr;
+        EXPECT_EQ(verve_agent_create(&d, &agent), VERVE_ERROR_INVALID_ARGUMENT) << bad.says;
+        EXPECT_EQ(agent, nullptr);
+        EXPECT_NE(lastError().find(bad.says), std::string::npos) << lastError();
+    }
+    // A V5 host's struct ends before the fields: one action set, whatever lies beyond.
+    unsigned char memory[sizeof(verve_agent_desc)];
+    std::memset(memory, 0xAB, sizeof memory);
+    verve_agent_desc* v5 = reinterpret_cast<verve_agent_desc*>(memory);
+    ASSERT_EQ(verve_agent_desc_init(v5, VERVE_AGENT_DESC_SIZE_V5), VERVE_OK);
+    v5->num_actions = 4;
+    ASSERT_EQ(verve_agent_create(v5, &agent), VERVE_OK) << verve_last_error();
+    ASSERT_EQ(verve_agent_get_desc(agent, &back), VERVE_OK);
+    EXPECT_EQ(back.num_action_branches, 0u);
+    EXPECT_EQ(back.num_actions, 4u);
+    ASSERT_EQ(verve_agent_split_action(agent, 3, choices, 1), VERVE_OK);
+    EXPECT_EQ(choices[0], 3u);
+    verve_agent_destroy(agent);
+}
+
 TEST(CApiDesc, DefaultsMatchTheDocumentedOnes) {
     verve_agent_desc d;
     verve_agent_desc_default(&d);
@@ -540,7 +616,8 @@ TEST(CApiDesc, AnOldSmallerStructIsAcceptedAndTheRestDefaulted) {
 TEST(CApiDesc, GarbageStructSizesAreRefused) {
     for (uint32_t size : {0u, 4u, VERVE_AGENT_DESC_SIZE_V1 - 8, VERVE_AGENT_DESC_SIZE_V1 + 4,
                           VERVE_AGENT_DESC_SIZE_V2 + 4, VERVE_AGENT_DESC_SIZE_V3 + 4,
-                          VERVE_AGENT_DESC_SIZE_V4 + 8, VERVE_AGENT_DESC_SIZE_V5 + 8, 0xFFFFFFFFu}) {
+                          VERVE_AGENT_DESC_SIZE_V4 + 8, VERVE_AGENT_DESC_SIZE_V5 + 8, VERVE_AGENT_DESC_SIZE_V6 + 8,
+                          0xFFFFFFFFu}) {
         verve_agent_desc d = smallDesc();
         d.struct_size = size;
         verve_agent* out = nullptr;

@@ -83,7 +83,8 @@ TEST(BinarySave, RoundTripIsExactForEveryKindOfAgent) {
     AgentDescriptor bandit;  // no sensors: one state
     bandit.numActions = 10;
     for (const AgentDescriptor& d : {iotest::mixedDescriptor(), discreteOnly, bandit, iotest::plannerDescriptor(),
-                                     iotest::groupedDescriptor(), iotest::customGroupsDescriptor()}) {
+                                     iotest::groupedDescriptor(), iotest::customGroupsDescriptor(),
+                                     iotest::branchedDescriptor()}) {
         Agent agent = trainedAgent(d, 410);  // 410: stops mid-trial, with traces and a previous step
         const std::string bytes = binarySave(agent);
         Agent loaded = loadAgentFromMemory(bytes.data(), bytes.size());
@@ -180,10 +181,11 @@ std::string asVersion(std::string bytes, const AgentSnapshot& snap, std::uint32_
     const std::size_t at = bytes.find(std::string(tail, 21), io::kBinaryHeaderBytes);
     if (at == std::string::npos) return {};
     // After the final reward range: version 5's 16 bytes, version 6's 9 (the grouping and a list
-    // of groups, empty for these agents), then the short-term memory flag and, from version 5,
-    // the trial's seconds.
-    if (version < 5 && bytes[at + 46] == 1) bytes.erase(at + 47, 4);
-    bytes.erase(at + 37, 9);
+    // of groups, empty for these agents), version 7's 8 (an empty list of action branches), then
+    // the short-term memory flag and, from version 5, the trial's seconds.
+    if (version < 5 && bytes[at + 54] == 1) bytes.erase(at + 55, 4);
+    bytes.erase(at + 46, 8);
+    if (version < 6) bytes.erase(at + 37, 9);
     if (version < 5) bytes.erase(at + 21, 16);
     if (version == 1) bytes.erase(at + 4, 17);
     if (version == 2) bytes.erase(at + 12, 9);
@@ -231,6 +233,16 @@ TEST(BinarySave, Version5SavesOfManySensorsKeepTheirOneLattice) {
     ASSERT_FALSE(bytes.empty());
     const AgentSnapshot loaded = loadAgentFromMemory(bytes.data(), bytes.size()).snapshot();
     EXPECT_EQ(loaded.descriptor.grouping, SensorGrouping::Joint);
+    expectSameSnapshot(snap, loaded);
+}
+
+TEST(BinarySave, Version6SavesHaveOneActionSet) {
+    Agent agent = trainedAgent(iotest::mixedDescriptor(), 410);
+    const AgentSnapshot snap = agent.snapshot();
+    const std::string bytes = asVersion(binarySave(agent), snap, 6);
+    ASSERT_FALSE(bytes.empty());
+    const AgentSnapshot loaded = loadAgentFromMemory(bytes.data(), bytes.size()).snapshot();
+    EXPECT_TRUE(loaded.descriptor.actionBranches.empty());
     expectSameSnapshot(snap, loaded);
 }
 

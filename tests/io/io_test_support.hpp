@@ -56,6 +56,13 @@ inline AgentDescriptor customGroupsDescriptor() {
     return d;
 }
 
+// Three action branches (3 x 2 x 2): 12 combined actions, 7 actor columns.
+inline AgentDescriptor branchedDescriptor() {
+    AgentDescriptor d = mixedDescriptor();
+    d.setActionBranches({3, 2, 2});
+    return d;
+}
+
 // A deterministic stream of observations and rewards, the same for every agent that replays it.
 class Feed {
 public:

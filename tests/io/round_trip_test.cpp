@@ -53,10 +53,24 @@ TEST(RoundTrip, SensorGroupsKeepTheirLatticesAndAreSavedAsTheyWereMade) {
         EXPECT_EQ(saveAgentToString(loaded), xml);
         expectSameFuture(agent, loaded);
     }
-    // An agent of a few sensors writes nothing new: older libraries still read its saves.
+    // An agent of a few sensors and one action set writes nothing new: older libraries still read its saves.
     const std::string plain = saveAgentToString(trainedAgent(iotest::mixedDescriptor(), 50));
     EXPECT_NE(plain.find("format_version=\"1\""), std::string::npos);
     EXPECT_EQ(plain.find("grouping"), std::string::npos);
+    EXPECT_EQ(plain.find("action_branch"), std::string::npos);
+}
+
+TEST(RoundTrip, ActionBranchesAndTheirTracesSurvive) {
+    Agent agent = trainedAgent(iotest::branchedDescriptor(), 410);
+    const std::string xml = saveAgentToString(agent);
+    EXPECT_NE(xml.find("format_version=\"3\""), std::string::npos);  // older libraries refuse it
+    EXPECT_NE(xml.find("<action_branch choices=\"3\""), std::string::npos);
+    Agent loaded = loadAgentFromMemory(xml.data(), xml.size());
+    EXPECT_EQ(loaded.descriptor().actionBranches, (std::vector<std::uint32_t>{3, 2, 2}));
+    EXPECT_EQ(loaded.descriptor().numActions, 12u);
+    expectSameSnapshot(agent.snapshot(), loaded.snapshot());
+    EXPECT_EQ(saveAgentToString(loaded), xml);
+    expectSameFuture(agent, loaded);
 }
 
 TEST(RoundTrip, ThroughAFile) {
