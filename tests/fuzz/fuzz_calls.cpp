@@ -64,7 +64,7 @@ extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size) {
         const Visible before = visible(agent);
         verve_result r = VERVE_OK;
         bool changes = false;  // a successful call of this kind may change what visible() reports
-        switch (in.ConsumeIntegralInRange<int>(0, 17)) {
+        switch (in.ConsumeIntegralInRange<int>(0, 18)) {
             case 0:
             case 1:
             case 2: {
@@ -133,11 +133,11 @@ extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size) {
                 const verve_fuzz::Observation o = verve_fuzz::anyObservation(in, d);
                 uint8_t mask[64];
                 for (uint8_t& m : mask) m = in.ConsumeIntegralInRange<int>(0, 15) == 0 ? in.ConsumeIntegral<uint8_t>() : in.ConsumeIntegralInRange<uint8_t>(0, 1);
-                const uint32_t n = in.ConsumeBool() ? d.num_actions : in.ConsumeIntegralInRange<uint32_t>(0, 64);
+                const uint32_t n = in.ConsumeBool() ? verve_fuzz::actionChoices(d) : in.ConsumeIntegralInRange<uint32_t>(0, 64);
                 uint32_t action = 0;
                 r = verve_agent_update_masked(agent, anyFloat(in, -1.5f, 1.5f), o.discrete, o.numDiscrete, o.continuous,
                                               o.numContinuous, anyFloat(in, 0.001f, 1.0f), n <= 64 ? mask : nullptr, n, &action);
-                if (r == VERVE_OK) VERVE_FUZZ_CHECK(action < d.num_actions && action < 64 && mask[action] == 1);
+                if (r == VERVE_OK) VERVE_FUZZ_CHECK(action < d.num_actions && n <= 64 && verve_fuzz::maskAllows(d, mask, action));
                 changes = true;
                 break;
             }
@@ -146,11 +146,11 @@ extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size) {
                 uint8_t mask[64];
                 for (uint8_t& m : mask) m = in.ConsumeIntegralInRange<int>(0, 15) == 0 ? in.ConsumeIntegral<uint8_t>() : in.ConsumeIntegralInRange<uint8_t>(0, 1);
                 const bool masked = in.ConsumeBool();
-                const uint32_t n = masked ? (in.ConsumeBool() ? d.num_actions : in.ConsumeIntegralInRange<uint32_t>(0, 64)) : 0;
+                const uint32_t n = masked ? (in.ConsumeBool() ? verve_fuzz::actionChoices(d) : in.ConsumeIntegralInRange<uint32_t>(0, 64)) : 0;
                 const uint32_t action = in.ConsumeBool() ? in.ConsumeIntegralInRange<uint32_t>(0, d.num_actions - 1) : in.ConsumeIntegral<uint32_t>();
                 r = verve_agent_update_demonstrated(agent, anyFloat(in, -1.5f, 1.5f), o.discrete, o.numDiscrete, o.continuous,
                                                     o.numContinuous, anyFloat(in, 0.001f, 1.0f), masked ? mask : nullptr, n, action);
-                if (r == VERVE_OK) VERVE_FUZZ_CHECK(action < d.num_actions && (!masked || mask[action] == 1));
+                if (r == VERVE_OK) VERVE_FUZZ_CHECK(action < d.num_actions && (!masked || (n <= 64 && verve_fuzz::maskAllows(d, mask, action))));
                 changes = true;
                 break;
             }
@@ -165,13 +165,36 @@ extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size) {
             case 14:
                 r = verve_agent_set_action_selection(agent, in.ConsumeIntegralInRange<uint32_t>(0, 2));
                 break;
-            case 15: {  // probabilities sum to 1 over the agent's actions
-                std::vector<float> p(in.ConsumeBool() ? d.num_actions : in.ConsumeIntegralInRange<uint32_t>(0, 16));
+            case 15: {  // probabilities sum to 1 over the agent's actions (over each branch's choices)
+                std::vector<float> p(in.ConsumeBool() ? verve_fuzz::actionChoices(d) : in.ConsumeIntegralInRange<uint32_t>(0, 16));
                 r = verve_agent_get_action_probabilities(agent, p.empty() ? nullptr : p.data(), static_cast<uint32_t>(p.size()));
                 if (r == VERVE_OK) {
-                    double sum = 0.0;
-                    for (float x : p) sum += x;
-                    VERVE_FUZZ_CHECK(sum > 0.99 && sum < 1.01);
+                    const uint32_t branches = d.num_action_branches == 0 ? 1 : d.num_action_branches;
+                    for (uint32_t b = 0, at = 0; b < branches; ++b) {
+                        const uint32_t size = d.num_action_branches == 0 ? d.num_actions : d.action_branches[b];
+                        double sum = 0.0;
+                        for (uint32_t k = 0; k < size; ++k) sum += p[at + k];
+                        VERVE_FUZZ_CHECK(sum > 0.99 && sum < 1.01);
+                        at += size;
+                    }
+                }
+                break;
+            }
+            case 18: {  // a combined action split and joined back; anything out of range refused
+                uint32_t choices[VERVE_MAX_ACTION_BRANCHES + 2] = {};
+                const uint32_t branches = d.num_action_branches == 0 ? 1 : d.num_action_branches;
+                const uint32_t n = in.ConsumeBool() ? branches : in.ConsumeIntegralInRange<uint32_t>(0, VERVE_MAX_ACTION_BRANCHES + 2);
+                const uint32_t action = in.ConsumeBool() ? in.ConsumeIntegralInRange<uint32_t>(0, d.num_actions - 1) : in.ConsumeIntegral<uint32_t>();
+                r = verve_agent_split_action(agent, action, choices, n);
+                VERVE_FUZZ_CHECK((r == VERVE_OK) == (n == branches && action < d.num_actions));
+                if (r == VERVE_OK) {
+                    uint32_t back = UINT32_MAX;
+                    VERVE_FUZZ_CHECK(verve_agent_join_action(agent, choices, n, &back) == VERVE_OK && back == action);
+                }
+                if (in.ConsumeBool()) {
+                    for (uint32_t& c : choices) c = in.ConsumeIntegralInRange<uint32_t>(0, 5);
+                    uint32_t joined = UINT32_MAX;
+                    if (verve_agent_join_action(agent, choices, n, &joined) == VERVE_OK) VERVE_FUZZ_CHECK(joined < d.num_actions);
                 }
                 break;
             }

@@ -97,7 +97,32 @@ inline verve_agent_desc anyDescriptor(FuzzedDataProvider& in) {
         const uint64_t g = in.ConsumeIntegral<uint64_t>();
         d.sensor_groups[i] = in.ConsumeIntegralInRange<int>(0, 15) == 0 ? g : (g & sensors);
     }
+    // Action branches, now and then: mostly 1-3 branches of 1-4 choices with num_actions 0 (their
+    // product), now and then a wrong num_actions, too many branches or a branch of 0 (refused).
+    if (in.ConsumeIntegralInRange<int>(0, 3) == 0) {
+        d.num_action_branches = in.ConsumeIntegralInRange<int>(0, 31) == 0 ? anyCount(in, 10) : in.ConsumeIntegralInRange<uint32_t>(1, 3);
+        for (uint32_t& b : d.action_branches) b = in.ConsumeIntegralInRange<int>(0, 31) == 0 ? anyCount(in, 5000) : in.ConsumeIntegralInRange<uint32_t>(1, 4);
+        if (in.ConsumeIntegralInRange<int>(0, 7) != 0) d.num_actions = 0;
+    }
     return d;
+}
+
+// Flags in an accepted agent's action mask: one per choice of each branch, or num_actions.
+inline uint32_t actionChoices(const verve_agent_desc& d) {
+    if (d.num_action_branches == 0) return d.num_actions;
+    uint32_t n = 0;
+    for (uint32_t b = 0; b < d.num_action_branches; ++b) n += d.action_branches[b];
+    return n;
+}
+
+// Whether an accepted agent's combined `action` is one `mask` (actionChoices(d) flags) allows.
+inline bool maskAllows(const verve_agent_desc& d, const uint8_t* mask, uint32_t action) {
+    if (d.num_action_branches == 0) return mask[action] == 1;
+    for (uint32_t b = 0, at = 0; b < d.num_action_branches; at += d.action_branches[b], ++b) {
+        if (mask[at + action % d.action_branches[b]] != 1) return false;
+        action /= d.action_branches[b];
+    }
+    return true;
 }
 
 // Observation arrays sized for any agent: counts are chosen separately (and may be wrong).

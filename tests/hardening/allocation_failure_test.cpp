@@ -139,5 +139,16 @@ TEST(AllocationFailure, EveryFailedAllocationLeavesAnAgentWithSensorGroupsAsItWa
     sweep(d);
 }
 
+// Action branches: a step marks and imitates one neuron per branch, praise credits each.
+TEST(AllocationFailure, EveryFailedAllocationLeavesAnAgentWithActionBranchesAsItWas) {
+    verve_agent_desc d = mixedDesc(false, 11);
+    d.num_actions = 0;
+    d.num_action_branches = 3;
+    d.action_branches[0] = 3;
+    d.action_branches[1] = 2;
+    d.action_branches[2] = 2;
+    sweep(d);
+}
+
 }  // namespace
 }  // namespace verve::hardening
