@@ -138,7 +138,7 @@ struct AgentDescriptor {
         return *this;
     }
     // actionBranches = sizes, numActions = their product (validate() refuses a product beyond
-    // DescriptorLimits::kMaxActions).
+    // DescriptorLimits::kMaxActions); no sizes: one action set of numActions again.
     AgentDescriptor& setActionBranches(std::vector<std::uint32_t> sizes);
     // Flags in an action mask, values in the policy's probabilities: the sum of the branches'
     // sizes, or numActions with one action set.

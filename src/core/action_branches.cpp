@@ -1,6 +1,9 @@
 #include "core/action_branches.hpp"
 
+#include <algorithm>
 #include <string>
+#include <utility>
+#include <vector>
 
 #include "verve/error.hpp"
 
@@ -30,6 +33,10 @@ ActionBranches ActionBranches::of(const AgentDescriptor& desc) {
 }  // namespace core
 
 AgentDescriptor& AgentDescriptor::setActionBranches(std::vector<std::uint32_t> sizes) {
+    if (sizes.empty()) {  // one action set again: numActions stays the user's
+        actionBranches.clear();
+        return *this;
+    }
     // Saturating: a product past the limit stays past it, for validate() to name.
     std::uint64_t product = 1;
     for (std::uint32_t n : sizes) product = std::min<std::uint64_t>(product * n, std::uint64_t(UINT32_MAX));

@@ -20,12 +20,8 @@ struct ActionBranches {
 
     static ActionBranches single(std::uint32_t numActions);
     static ActionBranches of(const AgentDescriptor& desc);  // desc validated
-    // The actor column of branch b's choice within the combined `action`.
-    std::uint32_t columnOf(std::uint32_t action, std::uint32_t b) const {
-        for (std::uint32_t i = 0; i < b; ++i) action /= size[i];
-        return offset[b] + action % size[b];
-    }
-    // Every branch's column for `action`, into columns[count]; returns count.
+    // The actor column of each branch's choice within the combined `action`, into out[0..count);
+    // returns count.
     std::uint32_t columnsOf(std::uint32_t action, std::uint32_t* out) const {
         for (std::uint32_t b = 0; b < count; ++b) {
             out[b] = offset[b] + action % size[b];

@@ -8,8 +8,8 @@
 namespace verve::core {
 
 TdLearner::TdLearner(const ActionBranches& branches, float traceThreshold)
-    : branches_(branches), columns_(branches.columns), stride_(1 + branches.columns), threshold_(traceThreshold),
-      kernels_(&kernels()) {
+    : branchCount_(branches.count), columns_(branches.columns), stride_(1 + branches.columns), threshold_(traceThreshold),
+      kernels_(&kernels()), branches_(branches) {
     if (stride_ > kStackStride) step_.resize(stride_);
 }
 
@@ -42,7 +42,7 @@ std::uint32_t TdLearner::chooseFromSums(Rng& rng, std::vector<float>& activation
     value = activations[WeightLayout::kValue];
     activations.erase(activations.begin());
     const bool uniform = value <= uniformAtOrBelow;
-    if (branches_.count == 1) return chooseIn(rng, activations.data(), columns_, allowed, greedy, uniform);
+    if (branchCount_ == 1) return chooseIn(rng, activations.data(), columns_, allowed, greedy, uniform);
     std::uint32_t action = 0, scale = 1;
     for (std::uint32_t b = 0; b < branches_.count; ++b) {
         const std::uint32_t at = branches_.offset[b], n = branches_.size[b];
@@ -148,9 +148,9 @@ void TdLearner::reserveLive(std::size_t more) {
 
 void TdLearner::mark(const std::vector<ActiveFeature>& phi, std::uint32_t action, std::uint32_t featureCount) {
     grow(featureCount);
-    // The trace column of each branch's choice (one action set: 1 + action).
-    std::uint32_t column[ActionBranches::kMax];
-    const std::uint32_t columns = branches_.columnsOf(action, column);
+    // The actor column of each branch's choice (one action set: the action).
+    std::uint32_t column[ActionBranches::kMax] = {action};
+    const std::uint32_t columns = branchCount_ == 1 ? 1 : branches_.columnsOf(action, column);
     // Below the threshold a trace would be dropped at the next decay anyway, and in a 4-sigma
     // neighbourhood most features are below it: a sequential, branch-free filter first, so that
     // only the features that mark anything touch the (randomly placed) trace rows.

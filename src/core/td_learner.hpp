@@ -184,7 +184,7 @@ private:
     void reserveLive(std::size_t more);  // room for `more` live entries beyond liveCount_
     float* trace(std::uint32_t feature) { return traces_.data() + std::size_t(feature) * stride_; }
 
-    ActionBranches branches_;
+    std::uint32_t branchCount_;  // 1: one action set (branches_, cold, is then never read)
     std::uint32_t columns_;  // actor columns: numActions, or the branches' sizes summed
     std::uint32_t stride_;   // 1 + columns_: value trace, then one per actor column
     float threshold_;
@@ -207,6 +207,7 @@ private:
     PolicyRange stagedRange_;
     bool stagedBounded_ = false;
     bool staged_ = false;
+    ActionBranches branches_;
 };
 
 }  // namespace verve::core

@@ -52,7 +52,6 @@ TEST(ActionBranches, CombinedActionsSplitAndJoinBranchZeroFastest) {
         EXPECT_EQ(columns[0], choices[0]);
         EXPECT_EQ(columns[1], 3 + choices[1]);
         EXPECT_EQ(columns[2], 5 + choices[2]);
-        EXPECT_EQ(b.columnOf(a, 2), columns[2]);
     }
     const std::uint32_t bad[3] = {0, 2, 0};
     EXPECT_THROW(d.actionOf(bad, 3), Error);  // branch 1 has 2 choices
