@@ -141,25 +141,34 @@ void Agent::Impl::plan(const StepConstants& k, const std::uint8_t* allowed) {
     stats.curiosityReward = result.curiosity;
 }
 
+namespace {
+
+// One branch's probabilities from its n activations p (flags: its n mask flags or nullptr).
+void normalizeBranch(float* p, std::uint32_t n, const std::uint8_t* flags, bool uniform) {
+    float total = 0.0f;
+    for (std::uint32_t a = 0; a < n; ++a) total += p[a];
+    if (!uniform && total > 0.0f && std::isfinite(total)) {
+        for (std::uint32_t a = 0; a < n; ++a) p[a] /= total;
+        return;
+    }
+    // A hopeless state, or activations that were not finite: the choice was uniform among the allowed.
+    float count = 0.0f;
+    for (std::uint32_t a = 0; a < n; ++a) {
+        p[a] = core::actionAllowed(flags, a) ? 1.0f : 0.0f;
+        count += p[a];
+    }
+    for (std::uint32_t a = 0; a < n; ++a) p[a] /= count;
+}
+
+}  // namespace
+
 void Agent::Impl::recordProbabilities(const std::uint8_t* allowed, bool uniform) {
+    // One action set reads nothing of the (cold) branches.
+    if (td.branchCount() == 1) return normalizeBranch(probabilities.data(), td.numActions(), allowed, uniform);
     const core::ActionBranches& branches = td.branches();
     for (std::uint32_t b = 0; b < branches.count; ++b) {
-        float* p = probabilities.data() + branches.offset[b];
         const std::uint8_t* flags = allowed == nullptr ? nullptr : allowed + branches.offset[b];
-        const std::uint32_t n = branches.size[b];
-        float total = 0.0f;
-        for (std::uint32_t a = 0; a < n; ++a) total += p[a];
-        if (!uniform && total > 0.0f && std::isfinite(total)) {
-            for (std::uint32_t a = 0; a < n; ++a) p[a] /= total;
-            continue;
-        }
-        // A hopeless state, or activations that were not finite: the choice was uniform among the allowed.
-        float count = 0.0f;
-        for (std::uint32_t a = 0; a < n; ++a) {
-            p[a] = core::actionAllowed(flags, a) ? 1.0f : 0.0f;
-            count += p[a];
-        }
-        for (std::uint32_t a = 0; a < n; ++a) p[a] /= count;
+        normalizeBranch(probabilities.data() + branches.offset[b], branches.size[b], flags, uniform);
     }
 }
 

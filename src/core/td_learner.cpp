@@ -7,6 +7,58 @@
 
 namespace verve::core {
 
+namespace {
+
+// A hopeless state, or activations that are not finite: a uniform choice among the allowed.
+std::uint32_t uniformAllowed(Rng& rng, std::uint32_t n, const std::uint8_t* allowed) {
+    if (allowed == nullptr) return rng.below(n);
+    std::uint32_t count = 0;
+    for (std::uint32_t a = 0; a < n; ++a) count += actionAllowed(allowed, a);
+    std::uint32_t pick = rng.below(count);
+    for (std::uint32_t a = 0; a < n; ++a) {
+        if (actionAllowed(allowed, a) && pick-- == 0) return a;
+    }
+    return 0;  // unreachable: callers allow at least one action of each branch
+}
+
+// One branch's choice among its n activations y (allowed: its n flags or nullptr), as
+// chooseFromSums describes. Inlined: one action set calls it once per update.
+VERVE_ALWAYS_INLINE std::uint32_t chooseIn(Rng& rng, float* y, std::uint32_t n, const std::uint8_t* allowed, bool greedy,
+                                           bool uniform) {
+    // The largest preference, not the largest activation: sigmoids that saturate at 1 or
+    // underflow to 0 tie in float where their preferences still differ.
+    std::uint32_t best = n;
+    for (std::uint32_t a = 0; a < n; ++a) {
+        if (actionAllowed(allowed, a) && (best == n || y[a] > y[best])) best = a;
+    }
+    const float top = y[best];
+    // Preferences below about -88 underflow every sigmoid to 0. There y_a = e^(x_a) to float
+    // precision, so the roulette's proportions are e^(x_a - x_max): taken relative to the largest,
+    // the choice still follows the preferences instead of turning uniform where float runs out.
+    const bool underflowed = sigmoid(top) == 0.0f && std::isfinite(top);
+    float total = 0.0f;
+    for (std::uint32_t a = 0; a < n; ++a) {
+        if (!actionAllowed(allowed, a)) y[a] = 0.0f;
+        else y[a] = underflowed ? std::exp(y[a] - top) : sigmoid(y[a]);
+        total += y[a];
+    }
+    if (greedy) return best;
+    if (!(total > 0.0f) || !std::isfinite(total) || uniform) return uniformAllowed(rng, n, allowed);
+    // Roulette (winner-take-all): each action in proportion to its neuron's activation.
+    float pick = rng.uniform() * total;
+    for (std::uint32_t a = 0; a < n; ++a) {
+        pick -= y[a];
+        if (pick < 0.0f) return a;
+    }
+    // Rounding left a sliver: the last action with any activation takes it.
+    for (std::uint32_t a = n; a-- > 0;) {
+        if (y[a] > 0.0f) return a;
+    }
+    return best;
+}
+
+}  // namespace
+
 TdLearner::TdLearner(const ActionBranches& branches, float traceThreshold)
     : branchCount_(branches.count), columns_(branches.columns), stride_(1 + branches.columns), threshold_(traceThreshold),
       kernels_(&kernels()), branches_(branches) {
@@ -50,51 +102,6 @@ std::uint32_t TdLearner::chooseFromSums(Rng& rng, std::vector<float>& activation
         scale *= n;
     }
     return action;
-}
-
-std::uint32_t TdLearner::chooseIn(Rng& rng, float* y, std::uint32_t n, const std::uint8_t* allowed, bool greedy,
-                                  bool uniform) {
-    // The largest preference, not the largest activation: sigmoids that saturate at 1 or
-    // underflow to 0 tie in float where their preferences still differ.
-    std::uint32_t best = n;
-    for (std::uint32_t a = 0; a < n; ++a) {
-        if (actionAllowed(allowed, a) && (best == n || y[a] > y[best])) best = a;
-    }
-    const float top = y[best];
-    // Preferences below about -88 underflow every sigmoid to 0. There y_a = e^(x_a) to float
-    // precision, so the roulette's proportions are e^(x_a - x_max): taken relative to the largest,
-    // the choice still follows the preferences instead of turning uniform where float runs out.
-    const bool underflowed = sigmoid(top) == 0.0f && std::isfinite(top);
-    float total = 0.0f;
-    for (std::uint32_t a = 0; a < n; ++a) {
-        if (!actionAllowed(allowed, a)) y[a] = 0.0f;
-        else y[a] = underflowed ? std::exp(y[a] - top) : sigmoid(y[a]);
-        total += y[a];
-    }
-    if (greedy) return best;
-    if (!(total > 0.0f) || !std::isfinite(total) || uniform) return uniformAllowed(rng, n, allowed);
-    // Roulette (winner-take-all): each action in proportion to its neuron's activation.
-    float pick = rng.uniform() * total;
-    for (std::uint32_t a = 0; a < n; ++a) {
-        pick -= y[a];
-        if (pick < 0.0f) return a;
-    }
-    // Rounding left a sliver: the last action with any activation takes it.
-    for (std::uint32_t a = n; a-- > 0;) {
-        if (y[a] > 0.0f) return a;
-    }
-    return best;
-}
-
-std::uint32_t TdLearner::uniformAllowed(Rng& rng, std::uint32_t n, const std::uint8_t* allowed) {
-    if (allowed == nullptr) return rng.below(n);
-    std::uint32_t count = 0;
-    for (std::uint32_t a = 0; a < n; ++a) count += actionAllowed(allowed, a);
-    std::uint32_t pick = rng.below(count);
-    for (std::uint32_t a = 0; a < n; ++a) {
-        if (actionAllowed(allowed, a) && pick-- == 0) return a;
-    }
-    return 0;  // unreachable: callers allow at least one action of each branch
 }
 
 bool TdLearner::stepFor(float delta, TdRates rates, float* step) const {
@@ -149,7 +156,8 @@ void TdLearner::reserveLive(std::size_t more) {
 void TdLearner::mark(const std::vector<ActiveFeature>& phi, std::uint32_t action, std::uint32_t featureCount) {
     grow(featureCount);
     // The actor column of each branch's choice (one action set: the action).
-    std::uint32_t column[ActionBranches::kMax] = {action};
+    std::uint32_t column[ActionBranches::kMax];
+    column[0] = action;
     const std::uint32_t columns = branchCount_ == 1 ? 1 : branches_.columnsOf(action, column);
     // Below the threshold a trace would be dropped at the next decay anyway, and in a 4-sigma
     // neighbourhood most features are below it: a sequential, branch-free filter first, so that
@@ -171,6 +179,7 @@ void TdLearner::mark(const std::vector<ActiveFeature>& phi, std::uint32_t action
         float* const traces = traces_.data();
         std::uint32_t* const live = live_.data();
         const std::size_t stride = stride_;
+        const std::size_t first = 1 + column[0];  // the first branch's trace (one action set: the action's)
         std::uint32_t count = liveCount_;
         for (std::size_t i = 0; i < n; ++i) {
             const ActiveFeature& f = strong[i];
@@ -179,12 +188,16 @@ void TdLearner::mark(const std::vector<ActiveFeature>& phi, std::uint32_t action
             count += e[0] == 0.0f;  // newly live (a live value trace is > 0)
             // Each max written as the instruction computes it (the larger, else the trace), and both
             // read before either is written: no branch on the data.
-            const float a = f.activation, v = e[0], p = e[1 + column[0]];
+            const float a = f.activation, v = e[0], p = e[first];
             e[0] = a > v ? a : v;
-            e[1 + column[0]] = a > p ? a : p;
-            for (std::uint32_t b = 1; b < columns; ++b) e[1 + column[b]] = std::max(a, e[1 + column[b]]);
+            e[first] = a > p ? a : p;
         }
         liveCount_ = count;
+        // The other branches' chosen neurons, apart: one action set's loop above stays as it was.
+        for (std::size_t i = 0; i < n && columns > 1; ++i) {
+            float* e = traces + strong[i].index * stride;
+            for (std::uint32_t b = 1; b < columns; ++b) e[1 + column[b]] = std::max(strong[i].activation, e[1 + column[b]]);
+        }
     }
 }
 

@@ -160,7 +160,8 @@ public:
     }
 
     std::uint32_t numActions() const { return columns_; }  // actor columns (one action set: its actions)
-    const ActionBranches& branches() const { return branches_; }
+    std::uint32_t branchCount() const { return branchCount_; }  // 1: one action set
+    const ActionBranches& branches() const { return branches_; }  // cold: read only with branches
     std::uint32_t liveCount() const { return liveCount_; }
     std::uint32_t traceStride() const { return stride_; }
     std::vector<std::uint32_t> liveFeatures() const;
@@ -174,12 +175,6 @@ private:
     // explains; returns whether the actor's range can be crossed (then the trained rows are clamped).
     bool stepFor(float delta, TdRates rates, float* step) const;
     void clampPolicy(WeightTable& w, const std::uint32_t* rows, std::size_t count, PolicyRange range) const;
-    // One branch's choice among its n activations y (allowed: its n flags or nullptr), as
-    // chooseFromSums describes.
-    static std::uint32_t chooseIn(Rng& rng, float* y, std::uint32_t n, const std::uint8_t* allowed, bool greedy,
-                                  bool uniform);
-    // A hopeless state, or activations that are not finite: a uniform choice among the allowed.
-    static std::uint32_t uniformAllowed(Rng& rng, std::uint32_t n, const std::uint8_t* allowed);
     void grow(std::uint32_t featureCount);
     void reserveLive(std::size_t more);  // room for `more` live entries beyond liveCount_
     float* trace(std::uint32_t feature) { return traces_.data() + std::size_t(feature) * stride_; }

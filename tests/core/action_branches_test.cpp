@@ -9,9 +9,11 @@
 
 #include "discrete_obs.hpp"
 #include "verve/agent.hpp"
+#include "validation_error.hpp"
 #include "verve/error.hpp"
 
 using namespace verve;
+using verve::coretest::validationError;
 using verve::coretest::discreteObs;
 
 namespace {
@@ -21,15 +23,6 @@ AgentDescriptor branched(std::vector<std::uint32_t> sizes) {
     d.addDiscreteSensor(2);
     d.setActionBranches(std::move(sizes));
     return d;
-}
-
-std::string validationError(const AgentDescriptor& d) {
-    try {
-        d.validate(FieldNaming::CAbi);
-    } catch (const Error& e) {
-        return e.what();
-    }
-    return "";
 }
 
 float branchSum(const std::vector<float>& p, std::size_t from, std::size_t n) {

@@ -7,9 +7,11 @@
 #include <vector>
 
 #include "core/state_representation.hpp"
+#include "validation_error.hpp"
 #include "verve/error.hpp"
 
 using namespace verve;
+using verve::coretest::validationError;
 using verve::core::ActiveFeature;
 using verve::core::StateRepresentation;
 
@@ -19,15 +21,6 @@ AgentDescriptor sensors(std::size_t n) {
     AgentDescriptor d;
     for (std::size_t i = 0; i < n; ++i) d.addContinuousSensor();
     return d;
-}
-
-std::string validationError(const AgentDescriptor& d) {
-    try {
-        d.validate(FieldNaming::CAbi);
-    } catch (const Error& e) {
-        return e.what();
-    }
-    return "";
 }
 
 }  // namespace
