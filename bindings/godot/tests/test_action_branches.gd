@@ -9,6 +9,7 @@ extends "res://checks.gd"
 
 const VerveAgent = preload("res://addons/verve/verve_agent.gdns")
 const VerveBrain = preload("res://addons/verve/verve_brain.gdns")
+const AgentNode = preload("res://addons/verve/verve_agent_node.gd")
 
 
 func npc(extra = {}):
@@ -92,6 +93,15 @@ func test_saves_and_brains():
 	var binary = VerveBrain.new()
 	check(binary.load_bytes(brain.save_binary_bytes()), "VerveBrain.load_bytes: " + binary.get_last_error())
 	check(binary.create_body().get_options()["action_branches"] == [3, 2], "a binary brain save keeps the branches")
+
+	# The node, as docs/godot.md says: Actions at the product, the branches through extra_options.
+	var node = AgentNode.new()
+	node.actions = 6
+	node.continuous_sensors = 2
+	node.extra_options = {"action_branches": [3, 2]}
+	root.add_child(node)
+	check(node.get_options()["action_branches"] == [3, 2], "a node's branches through extra_options: %s" % node.last_error)
+	node.queue_free()
 
 
 # docs/godot.md, "Action branches", as written there.
