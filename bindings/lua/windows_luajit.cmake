@@ -12,7 +12,7 @@ if(NOT EXISTS "${VERVE_LUAJIT_DIR}/lua.h" OR NOT EXISTS "${VERVE_LUAJIT_DIR}/lua
 endif()
 
 set(VERVE_LUA_OUTPUT_DIR ${CMAKE_BINARY_DIR}/lua/jit)
-add_library(verve_lua_jit MODULE src/verve_lua.c src/lua_warnings.c src/lua_recording.c
+add_library(verve_lua_jit MODULE src/verve_lua.c src/lua_warnings.c src/lua_recording.c src/lua_actions.c
   ${PROJECT_SOURCE_DIR}/bindings/shared/warning_queue.c $<TARGET_OBJECTS:verve_capi_objects>)
 target_include_directories(verve_lua_jit PRIVATE ${VERVE_LUAJIT_DIR} ${PROJECT_SOURCE_DIR}/include
   ${PROJECT_SOURCE_DIR}/bindings/shared)
@@ -35,7 +35,7 @@ if(NOT VERVE_BUILD_TESTS OR NOT CMAKE_CROSSCOMPILING_EMULATOR)
 endif()
 # The same scripts as on Linux (CMakeLists.txt beside this file), with luajit.exe under Wine; the
 # folder holding the module is the working directory: Lua's default cpath starts with .\?.dll.
-set(VERVE_LUA_TESTS module descriptor agent errors close persistence learning policy crowd warnings sensor_groups)
+set(VERVE_LUA_TESTS module descriptor agent errors close persistence learning policy crowd warnings sensor_groups action_branches)
 set(paths "package.path=[[${CMAKE_CURRENT_SOURCE_DIR}/tests/?.lua;${PROJECT_SOURCE_DIR}/samples/lua/?.lua]]")
 foreach(name IN LISTS VERVE_LUA_TESTS)
   add_test(NAME lua.jit.${name} COMMAND ${CMAKE_CROSSCOMPILING_EMULATOR} ${VERVE_LUA_OUTPUT_DIR}/luajit.exe

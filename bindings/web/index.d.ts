@@ -71,6 +71,15 @@ export interface AgentDescriptor {
    * `grouping`, it means 'custom'. Read back: [] for the other groupings.
    */
   sensorGroups?: number[][];
+  /**
+   * Action branches: several independent choices per step, e.g. [3, 3, 2] for move x turn x use,
+   * each by an actor head of its own (at most 8 branches). An action is then the combined index
+   * c0 + n0 * (c1 + n1 * (c2 + ...)) (branch 0 fastest; Agent.splitAction/joinAction convert).
+   * `actions` may be left out (it becomes the product) or must equal the product. Masks and
+   * actionProbabilities() then hold one entry per choice of each branch, branch after branch.
+   * Planning needs one action set. Read back: [] without branches.
+   */
+  actionBranches?: number[];
 }
 
 /** A descriptor as read back: every field present, continuous as a list. */
@@ -108,11 +117,19 @@ export interface ValueAxis {
 
 export class Agent {
   private constructor();
+  /** Combined actions (with action branches, the product of their sizes). */
   readonly numActions: number;
+  /** The action branches' sizes ([] with one action set). */
+  readonly actionBranches: readonly number[];
+  /** Flags in a mask, values in actionProbabilities(): numActions, or the branches' sizes summed. */
+  readonly numChoices: number;
   readonly numDiscrete: number;
   readonly numContinuous: number;
   readonly disposed: boolean;
-  /** One step; returns the action (0 .. actions - 1). mask: one flag per action, at least one true. */
+  /**
+   * One step; returns the action (0 .. actions - 1). mask: one flag per action, at least one true;
+   * with action branches one per choice of each branch, branch after branch, at least one true in each.
+   */
   update(reward: number, observation: Observation | null | undefined, dt: number, mask?: ArrayLike<boolean | 0 | 1>): number;
   /** A step the player or a scripted AI took (docs/teaching.md): `action` is learned from as the agent's own. */
   updateDemonstrated(reward: number, observation: Observation | null | undefined, dt: number, action: number,
@@ -128,7 +145,12 @@ export class Agent {
   learning(): boolean;
   setActionSelection(mode: 'sample' | 'greedy'): void;
   actionSelection(): 'sample' | 'greedy';
+  /** Each action's probability; with action branches, each branch's choices in turn, each branch summing to 1. */
   actionProbabilities(out?: Float32Array): Float32Array;
+  /** The choice of each action branch (from 0) within a combined action; [action] without branches. */
+  splitAction(action: number): number[];
+  /** The combined action of one choice per branch (each from 0, branch 0 varying fastest). */
+  joinAction(choices: ArrayLike<number>): number;
   value(): number;
   tdError(): number;
   rbfCount(): number;

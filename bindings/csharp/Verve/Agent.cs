@@ -66,7 +66,9 @@ namespace Verve
         }
 
         /// <summary>One step choosing only among the actions <paramref name="allowed"/> permits
-        /// (one flag per action, 1 allowed, 0 not, at least one 1). A masked action is never chosen and gets no credit.</summary>
+        /// (one flag per action, 1 allowed, 0 not, at least one 1; with <see cref="AgentOptions.ActionBranches"/>
+        /// one flag per choice of each branch, branch after branch, at least one 1 in each). A masked action is
+        /// never chosen and gets no credit.</summary>
         /// <exception cref="VerveException">As <see cref="Update(float, ReadOnlySpan{int}, ReadOnlySpan{float}, float)"/>,
         /// or a mask of the wrong length, with a flag other than 0/1, or allowing nothing.</exception>
         public unsafe int Update(float reward, ReadOnlySpan<int> discrete, ReadOnlySpan<float> continuous, float dt,
@@ -148,7 +150,8 @@ namespace Verve
         }
 
         /// <summary>The policy's probability of each action at the latest update (summing to 1; 0 for masked
-        /// actions); uniform before any update.</summary>
+        /// actions); uniform before any update. With <see cref="AgentOptions.ActionBranches"/>, one per choice
+        /// of each branch, branch after branch, each branch summing to 1.</summary>
         public unsafe float[] ActionProbabilities
         {
             get
@@ -156,7 +159,14 @@ namespace Verve
                 AgentHandle handle = Handle;
                 var desc = new verve_agent_desc { struct_size = (uint)sizeof(verve_agent_desc) };
                 VerveException.ThrowIfFailed(NativeMethods.verve_agent_get_desc(handle, &desc));
-                var probabilities = new float[desc.num_actions];
+                uint count = desc.num_actions;
+                if (desc.num_action_branches > 0)
+                {
+                    count = 0;
+                    for (int i = 0; i < Math.Min(desc.num_action_branches, AgentOptions.MaxActionBranches); i++)
+                        count += desc.action_branches[i];
+                }
+                var probabilities = new float[count];
                 fixed (float* p = probabilities)
                 {
                     VerveException.ThrowIfFailed(NativeMethods.verve_agent_get_action_probabilities(handle, p,
@@ -164,6 +174,45 @@ namespace Verve
                 }
                 return probabilities;
             }
+        }
+
+        /// <summary>The choice of each action branch (from 0) within a combined <paramref name="action"/>
+        /// (branch 0 varies fastest); one choice, the action itself, without branches.</summary>
+        /// <exception cref="ArgumentOutOfRangeException"><paramref name="action"/> is negative.</exception>
+        /// <exception cref="VerveException">The action is not one of the agent's.</exception>
+        public unsafe int[] SplitAction(int action)
+        {
+            if (action < 0) throw new ArgumentOutOfRangeException(nameof(action), action, "an action is an index from 0");
+            AgentHandle handle = Handle;
+            var desc = new verve_agent_desc { struct_size = (uint)sizeof(verve_agent_desc) };
+            VerveException.ThrowIfFailed(NativeMethods.verve_agent_get_desc(handle, &desc));
+            uint branches = Math.Max(desc.num_action_branches, 1u);
+            uint* choices = stackalloc uint[AgentOptions.MaxActionBranches];
+            VerveException.ThrowIfFailed(NativeMethods.verve_agent_split_action(handle, (uint)action, choices,
+                Math.Min(branches, (uint)AgentOptions.MaxActionBranches)));
+            var result = new int[branches];
+            for (int i = 0; i < result.Length; i++) result[i] = (int)choices[i];
+            return result;
+        }
+
+        /// <summary>The combined action of one choice per action branch (each from 0), as <c>Update</c> returns it.</summary>
+        /// <exception cref="ArgumentException">No choice.</exception>
+        /// <exception cref="ArgumentOutOfRangeException">A choice is negative.</exception>
+        /// <exception cref="VerveException">Not one choice per branch, or a choice out of its branch's range.</exception>
+        public unsafe int JoinAction(params int[] choices)
+        {
+            if (choices == null) throw new ArgumentNullException(nameof(choices));
+            if (choices.Length == 0) throw new ArgumentException("an action is one choice per branch (none given)", nameof(choices));
+            foreach (int choice in choices)
+                if (choice < 0) throw new ArgumentOutOfRangeException(nameof(choices), choice, "a choice is an index from 0");
+            AgentHandle handle = Handle;
+            uint action;
+            fixed (int* c = choices)
+            {
+                VerveException.ThrowIfFailed(NativeMethods.verve_agent_join_action(handle, (uint*)c, (uint)choices.Length,
+                    out action));
+            }
+            return (int)action;
         }
 
         /// <summary>Forgets the current trial (traces, previous observation) but keeps everything learned.</summary>

@@ -20,10 +20,13 @@ namespace Verve
         public const int MaxContinuousSensors = verve_agent_desc.MaxContinuousSensors;
         /// <summary>Most sensor groups (lattices) a <see cref="SensorGrouping.Custom"/> grouping can list.</summary>
         public const int MaxSensorGroups = verve_agent_desc.MaxSensorGroups;
+        /// <summary>Most action branches an agent can have.</summary>
+        public const int MaxActionBranches = verve_agent_desc.MaxActionBranches;
 
         private readonly List<int> _discreteSensors = new List<int>();
         private readonly List<bool> _continuousCircular = new List<bool>();
         private readonly List<IReadOnlyList<int>> _sensorGroups = new List<IReadOnlyList<int>>();
+        private readonly List<int> _actionBranches = new List<int>();
         private int _actions;
         private int _resolution;
         private int _maxPlanningSteps;
@@ -41,6 +44,8 @@ namespace Verve
                     _continuousCircular.Add(p->continuous_sensor_circular[i] != 0);
                 for (int i = 0; i < Math.Min(d.num_sensor_groups, MaxSensorGroups); i++)
                     _sensorGroups.Add(SensorsOf(p->sensor_groups[i]));
+                for (int i = 0; i < Math.Min(d.num_action_branches, MaxActionBranches); i++)
+                    _actionBranches.Add((int)p->action_branches[i]);
             }
             _resolution = (int)d.resolution;
             _actions = (int)d.num_actions;
@@ -72,7 +77,9 @@ namespace Verve
         /// <summary>Whether each continuous sensor wraps around (angles), in observation order.</summary>
         public IReadOnlyList<bool> ContinuousSensorCircular => _continuousCircular.AsReadOnly();
 
-        /// <summary>Number of actions the agent chooses from.</summary>
+        /// <summary>Number of actions the agent chooses from. With <see cref="ActionBranches"/>, the number of
+        /// combined actions: <see cref="SetActionBranches(int[])"/> sets it to their product, and any other
+        /// value is refused when the agent is created.</summary>
         public int Actions { get => _actions; set => _actions = NonNegative(value, nameof(Actions)); }
 
         /// <summary>RBFs across [-1, 1] per continuous sensor (RBF width 2 / resolution).</summary>
@@ -186,6 +193,50 @@ namespace Verve
             return this;
         }
 
+        /// <summary>The choices of each action branch (empty: one set of <see cref="Actions"/> actions). With
+        /// branches the agent chooses one choice per branch on every step, each by an actor head of its own;
+        /// an action is then the combined index c0 + n0 * (c1 + n1 * (c2 + ...)) (branch 0 fastest), which
+        /// <see cref="Agent.SplitAction(int)"/> and <see cref="Agent.JoinAction(int[])"/> convert. Masks and
+        /// <see cref="Agent.ActionProbabilities"/> then hold one entry per choice of each branch, branch
+        /// after branch. Planning needs one action set.</summary>
+        public IReadOnlyList<int> ActionBranches => _actionBranches.AsReadOnly();
+
+        /// <summary>Gives the agent action branches of these sizes (e.g. 3, 3, 2 for move x turn x use) and
+        /// sets <see cref="Actions"/> to their product.</summary>
+        /// <example><code>
+        /// var options = new AgentOptions().AddContinuousSensor().SetActionBranches(3, 3, 2); // Actions == 18
+        /// </code></example>
+        /// <exception cref="ArgumentException">No branch, or more than <see cref="MaxActionBranches"/>.</exception>
+        /// <exception cref="ArgumentOutOfRangeException">A branch with fewer than 1 choice.</exception>
+        public AgentOptions SetActionBranches(params int[] sizes)
+        {
+            if (sizes == null) throw new ArgumentNullException(nameof(sizes));
+            if (sizes.Length == 0)
+                throw new ArgumentException("action branches need at least one branch (ClearActionBranches() for one action set)",
+                    nameof(sizes));
+            if (sizes.Length > MaxActionBranches)
+                throw new ArgumentException($"an agent has at most {MaxActionBranches} action branches (got {sizes.Length})",
+                    nameof(sizes));
+            long product = 1;
+            foreach (int size in sizes)
+            {
+                if (size < 1)
+                    throw new ArgumentOutOfRangeException(nameof(sizes), size, "an action branch has at least 1 choice");
+                product = Math.Min(product * size, int.MaxValue); // beyond the library's limit: it refuses
+            }
+            _actionBranches.Clear();
+            _actionBranches.AddRange(sizes);
+            _actions = (int)product;
+            return this;
+        }
+
+        /// <summary>Removes the action branches: one set of <see cref="Actions"/> actions (left as it is).</summary>
+        public AgentOptions ClearActionBranches()
+        {
+            _actionBranches.Clear();
+            return this;
+        }
+
         /// <summary>Adds a discrete sensor reading integers 0 .. <paramref name="values"/> - 1.</summary>
         public AgentOptions AddDiscreteSensor(int values)
         {
@@ -247,6 +298,8 @@ namespace Verve
             CheckSensorGroups();
             d.num_sensor_groups = (uint)_sensorGroups.Count;
             for (int i = 0; i < _sensorGroups.Count; i++) d.sensor_groups[i] = MaskOf(_sensorGroups[i]);
+            d.num_action_branches = (uint)_actionBranches.Count; // SetActionBranches keeps it <= MaxActionBranches
+            for (int i = 0; i < _actionBranches.Count; i++) d.action_branches[i] = (uint)_actionBranches[i];
             return d;
         }
 

@@ -164,6 +164,30 @@ static class MonoHost
             }
         });
 
+        // Action branches: {3, 2} through the descriptor, a per-branch mask, probabilities per branch, split/join.
+        Check("AgentOptions.get_ActionBranches(); AgentOptions.SetActionBranches(Int32[]); AgentOptions.ClearActionBranches(); " +
+              "Agent.SplitAction(Int32); Agent.JoinAction(Int32[])", () =>
+        {
+            var options = new AgentOptions { Seed = 5 }.AddContinuousSensor().SetActionBranches(3, 2);
+            Require(options.Actions == 6, "SetActionBranches did not set Actions to the product");
+            using (var agent = new Agent(options))
+            {
+                Require(agent.Options.ActionBranches.SequenceEqual(new[] { 3, 2 }), "the branches did not come back");
+                byte[] mask = { 1, 0, 1, 0, 1 };
+                for (int step = 0; step < 50; step++)
+                {
+                    int[] c = agent.SplitAction(agent.Update(0.1f, new int[0], new[] { (float)Math.Sin(step) }, 0.1f, mask));
+                    Require((c[0] == 0 || c[0] == 2) && c[1] == 1, "a chosen action broke the per-branch mask");
+                }
+                float[] p = agent.ActionProbabilities;
+                Require(p.Length == 5 && Math.Abs(p[3] + p[4] - 1f) < 1e-5f, "probabilities are not per branch");
+                Require(agent.JoinAction(2, 1) == 5 && agent.JoinAction(agent.SplitAction(4)) == 4, "split/join do not round trip");
+                Expect<VerveException>(() => agent.JoinAction(3, 0));
+            }
+            options.ClearActionBranches();
+            Require(options.ActionBranches.Count == 0, "ClearActionBranches left branches");
+        });
+
         // Sensor groups: Auto's lattices for 12 sensors (Full allocation shows them), custom groups there and back.
         Check("AgentOptions.get_Grouping(); AgentOptions.set_Grouping(SensorGrouping); AgentOptions.AddSensorGroup(Int32[]); " +
               "AgentOptions.get_SensorGroups(); AgentOptions.ClearSensorGroups()", () =>

@@ -5,7 +5,8 @@
 #include <string.h>
 
 typedef enum vg_kind {
-    VG_UINT, VG_FLOAT, VG_UINT64, VG_BOOL, VG_ENUM, VG_DISCRETE_SENSORS, VG_CIRCULAR, VG_SENSOR_GROUPS
+    VG_UINT, VG_FLOAT, VG_UINT64, VG_BOOL, VG_ENUM, VG_DISCRETE_SENSORS, VG_CIRCULAR, VG_SENSOR_GROUPS,
+    VG_ACTION_BRANCHES
 } vg_kind;
 
 typedef struct vg_option {
@@ -47,6 +48,7 @@ static const vg_option vg_options[] = {
     VG_OPTION("adaptation", adaptation, VG_UINT64, NULL),
     VG_OPTION("grouping", sensor_grouping, VG_ENUM, vg_grouping_names),
     VG_OPTION("sensor_groups", sensor_groups, VG_SENSOR_GROUPS, NULL),
+    VG_OPTION("action_branches", action_branches, VG_ACTION_BRANCHES, NULL),
 };
 
 #define VG_OPTION_COUNT (sizeof vg_options / sizeof vg_options[0])
@@ -160,6 +162,25 @@ static int vg_check_sensor_groups(vg_call* c, verve_agent_desc* d, int grouping_
     return 1;
 }
 
+/* action_branches: an Array (or PoolIntArray) of choice counts, one per branch, like [3, 3, 2]. */
+static int vg_read_action_branches(vg_call* c, const vg_option* o, const godot_variant* v, verve_agent_desc* d) {
+    int32_t sizes[VERVE_MAX_ACTION_BRANCHES];
+    uint32_t n = 0, b;
+    char name[64];
+    godot_variant_type t = vg_core->godot_variant_get_type(v);
+    if (t != GODOT_VARIANT_TYPE_ARRAY && t != GODOT_VARIANT_TYPE_POOL_INT_ARRAY)
+        return vg_option_error(c, o, "an Array of choice counts, one per branch, like [3, 3, 2]", v);
+    snprintf(name, sizeof name, "option '%s'", o->name);
+    if (!vg_read_ints(c, v, name, sizes, VERVE_MAX_ACTION_BRANCHES, &n)) return 0;
+    for (b = 0; b < n; ++b) {
+        if (sizes[b] < 1)
+            return vg_fail(c, "%s[%u] must be a number of choices, at least 1 (got %d)", name, b, (int)sizes[b]);
+        d->action_branches[b] = (uint32_t)sizes[b];
+    }
+    d->num_action_branches = n;
+    return 1;
+}
+
 static int vg_read_enum(vg_call* c, const vg_option* o, const godot_variant* v, uint32_t* out) {
     char expected[128] = "one of";
     uint32_t i = 0;
@@ -203,6 +224,7 @@ static int vg_read_option(vg_call* c, const vg_option* o, const godot_variant* v
     case VG_DISCRETE_SENSORS: return vg_read_discrete_sensors(c, o, v, d);
     case VG_CIRCULAR: return vg_read_circular(c, o, v, d);
     case VG_SENSOR_GROUPS: return vg_read_sensor_groups(c, o, v, d);
+    case VG_ACTION_BRANCHES: return vg_read_action_branches(c, o, v, d);
     }
     return 0;
 }
@@ -222,6 +244,9 @@ int vg_options_read(vg_call* c, int i, verve_agent_desc* d) {
         if (values[k]) ok = vg_read_option(c, &vg_options[k], values[k], d);
     for (k = 0; k < VG_OPTION_COUNT && vg_options[k].offset != offsetof(verve_agent_desc, sensor_grouping); ++k) {}
     if (ok) ok = vg_check_sensor_groups(c, d, k < VG_OPTION_COUNT && values[k] != NULL);
+    /* Branches without 'actions': num_actions 0, which the library sets to their product. */
+    for (k = 0; k < VG_OPTION_COUNT && vg_options[k].offset != offsetof(verve_agent_desc, num_actions); ++k) {}
+    if (ok && d->num_action_branches > 0 && (k == VG_OPTION_COUNT || values[k] == NULL)) d->num_actions = 0;
     vg_core->godot_dictionary_destroy(&dict);
     return ok;
 }
@@ -243,12 +268,16 @@ static godot_variant vg_option_variant(const vg_option* o, const verve_agent_des
     }
     case VG_DISCRETE_SENSORS:
     case VG_CIRCULAR:
+    case VG_ACTION_BRANCHES:
         vg_core->godot_array_new(&list);
-        n = o->kind == VG_CIRCULAR ? d->num_continuous_sensors : d->num_discrete_sensors;
-        if (n > (o->kind == VG_CIRCULAR ? VERVE_MAX_CONTINUOUS_SENSORS : VERVE_MAX_DISCRETE_SENSORS)) n = 0;
+        n = o->kind == VG_CIRCULAR ? d->num_continuous_sensors
+            : o->kind == VG_ACTION_BRANCHES ? d->num_action_branches : d->num_discrete_sensors;
+        if (n > (o->kind == VG_CIRCULAR ? VERVE_MAX_CONTINUOUS_SENSORS
+                 : o->kind == VG_ACTION_BRANCHES ? VERVE_MAX_ACTION_BRANCHES : VERVE_MAX_DISCRETE_SENSORS)) n = 0;
         for (i = 0; i < n; ++i) {
             godot_variant e = o->kind == VG_CIRCULAR ? vg_variant_bool(d->continuous_sensor_circular[i])
-                                                     : vg_variant_int(d->discrete_sensor_values[i]);
+                              : o->kind == VG_ACTION_BRANCHES ? vg_variant_int(d->action_branches[i])
+                                                              : vg_variant_int(d->discrete_sensor_values[i]);
             vg_core->godot_array_append(&list, &e);
             vg_core->godot_variant_destroy(&e);
         }

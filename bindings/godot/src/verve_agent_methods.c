@@ -6,6 +6,7 @@
 #include <stdlib.h>
 #include <string.h>
 
+#include "action_choices.h"
 #include "gd_options.h"
 
 /* sample_values refuses more points than this instead of allocating without bound. */
@@ -84,8 +85,9 @@ VG_METHOD(save_bytes) {
     return vg_save_to_bytes(&c, vg_agent_save_memory, a);
 }
 
-/* Most actions an agent may have (the library's limit): a mask is read onto the stack. */
-#define VG_MAX_ACTIONS 4096
+/* Most flags in a mask, read onto the stack: the library's limit of 4096 actions, or with action
+ * branches one per choice of each branch (their sum exceeds the product by at most one per branch). */
+#define VG_MAX_ACTIONS (4096 + VERVE_MAX_ACTION_BRANCHES)
 
 /* update, update_masked and update_demonstrated: argv is (reward, discrete, continuous, dt), then
  * update_masked's mask, or update_demonstrated's action and optional mask. */
@@ -273,8 +275,10 @@ VG_METHOD(get_action_probabilities) {
     if (!vg_begin(&c, user_data, "get_action_probabilities", argc, argv, 0, 0) || !vg_agent_handle(&c, &a) ||
         !vg_check(&c, verve_agent_get_desc(a, &d)))
         return vg_variant_nil();
-    out = vg_reals_open(&values, &write, d.num_actions);
-    return vg_reals_close(&values, write, vg_check(&c, verve_agent_get_action_probabilities(a, out, d.num_actions)));
+    /* One per action, or with action branches one per choice of each branch (each branch sums to 1). */
+    out = vg_reals_open(&values, &write, vb_action_choices(&d));
+    return vg_reals_close(&values, write,
+                          vg_check(&c, verve_agent_get_action_probabilities(a, out, vb_action_choices(&d))));
 }
 
 VG_METHOD(get_stats) {

@@ -47,7 +47,8 @@ static const vg_method_info vg_agent_methods[] = {
       {"continuous", GODOT_VARIANT_TYPE_POOL_REAL_ARRAY},
       {"dt", GODOT_VARIANT_TYPE_REAL}}},
     {"update_masked", vg_update_masked,
-     "update() choosing only among the actions the mask allows this step (one 0/1 per action, at least one 1); "
+     "update() choosing only among the actions the mask allows this step (one 0/1 per action, at least one 1; "
+     "with action branches one per choice of each branch, branch after branch, at least one 1 in each); "
      "a masked action is never chosen and gets no credit. -> the action (-1 on error)",
      5,
      {{"reward", GODOT_VARIANT_TYPE_REAL},
@@ -89,8 +90,16 @@ static const vg_method_info vg_agent_methods[] = {
     {"get_td_error", vg_get_td_error, "TD error of the latest step. -> float", 0, {{0}}},
     {"get_rbf_count", vg_get_rbf_count, "Radial basis functions created so far. -> int", 0, {{0}}},
     {"get_action_probabilities", vg_get_action_probabilities,
-     "The policy's probability of each action at the latest update (what sampling drew from). -> PoolRealArray",
+     "The policy's probability of each action at the latest update (what sampling drew from); with action "
+     "branches one per choice of each branch, branch after branch, each branch summing to 1. -> PoolRealArray",
      0, {{0}}},
+    {"split_action", vg_split_action,
+     "The choice of each action branch (from 0) within a combined action; one value without branches. -> Array",
+     1, {{"action", GODOT_VARIANT_TYPE_INT}}},
+    {"join_action", vg_join_action,
+     "The combined action of one choice per action branch (each from 0, branch 0 varying fastest); -1 on error. "
+     "-> int",
+     1, {{"choices", GODOT_VARIANT_TYPE_ARRAY}}},
     {"take_warnings", vg_take_warnings,
      "libverve's warnings since the previous call, oldest first (a reward clamped to [-1, 1], an RBF budget "
      "reached: once per agent each; also printed as they come). -> PoolStringArray",

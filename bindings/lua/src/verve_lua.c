@@ -12,6 +12,8 @@
 
 #include <verve_c.h>
 
+#include "action_choices.h"
+#include "lua_actions.h"
 #include "lua_compat.h"
 #include "lua_recording.h"
 #include "lua_shared.h"
@@ -125,7 +127,6 @@ static const char* const lv_curiosity_names[] = {"none", "novelty", "progress", 
 static const char* const lv_prediction_names[] = {"categorical", "ordinal", NULL};
 static const char* const lv_selection_names[] = {"sample", "greedy", NULL};
 static const char* const lv_grouping_names[] = {"auto", "joint", "custom", NULL};
-#define LV_MAX_ACTIONS 4096 /* the library's limit on num_actions */
 
 #define LV_FIELD(name, member, kind, names) {name, offsetof(verve_agent_desc, member), kind, names}
 static const lv_field lv_fields[] = {
@@ -328,7 +329,7 @@ static void lv_check_sensor_groups(lua_State* L, verve_agent_desc* d, int groupi
 
 /* The table at idx over the library defaults; unknown fields and wrong types are errors. */
 static void lv_read_desc(lua_State* L, int idx, verve_agent_desc* d) {
-    int grouping_given = 0;
+    int grouping_given = 0, actions_given = 0;
     idx = lua_absindex(L, idx);
     luaL_checktype(L, idx, LUA_TTABLE);
     verve_agent_desc_default(d);
@@ -345,21 +346,25 @@ static void lv_read_desc(lua_State* L, int idx, verve_agent_desc* d) {
             lv_read_continuous_sensors(L, d);
         } else if (strcmp(key, "sensor_groups") == 0) {
             lv_read_sensor_groups(L, d);
+        } else if (strcmp(key, "action_branches") == 0) {
+            lv_read_action_branches(L, d);
         } else {
             while (i < LV_FIELD_COUNT && strcmp(lv_fields[i].name, key) != 0) ++i;
             if (i == LV_FIELD_COUNT) luaL_error(L, "verve: agent: unknown descriptor field '%s'", key);
             lv_read_field(L, &lv_fields[i], d);
             if (lv_fields[i].offset == offsetof(verve_agent_desc, sensor_grouping)) grouping_given = 1;
+            if (lv_fields[i].offset == offsetof(verve_agent_desc, num_actions)) actions_given = 1;
         }
         lua_pop(L, 1);
     }
     lv_check_sensor_groups(L, d, grouping_given);
+    lv_finish_action_branches(d, actions_given);
 }
 
 static void lv_push_desc(lua_State* L, const verve_agent_desc* d) {
     uint32_t i;
     size_t f;
-    lua_createtable(L, 0, (int)LV_FIELD_COUNT + 3);
+    lua_createtable(L, 0, (int)LV_FIELD_COUNT + 4);
     lua_createtable(L, (int)d->num_discrete_sensors, 0);
     for (i = 0; i < d->num_discrete_sensors && i < VERVE_MAX_DISCRETE_SENSORS; ++i) {
         lua_pushinteger(L, (lua_Integer)d->discrete_sensor_values[i]);
@@ -386,6 +391,8 @@ static void lv_push_desc(lua_State* L, const verve_agent_desc* d) {
         lua_rawseti(L, -2, (int)i + 1);
     }
     lua_setfield(L, -2, "sensor_groups");
+    lv_push_action_branches(L, d);
+    lua_setfield(L, -2, "action_branches");
     for (f = 0; f < LV_FIELD_COUNT; ++f) {
         lv_push_field(L, &lv_fields[f], d);
         lua_setfield(L, -2, lv_fields[f].name);
@@ -492,12 +499,13 @@ static int lv_version(lua_State* L) {
 
 /* ---- agent methods ---------------------------------------------------------------------- */
 
-/* An optional list of booleans, one per action (true: allowed this step); returns its length. */
+/* An optional list of booleans, one per action (true: allowed this step), or with action branches
+ * one per choice of each branch, branch after branch; returns its length. */
 static uint32_t lv_read_mask(lua_State* L, int idx, uint8_t* mask) {
     uint32_t n, i;
     luaL_checktype(L, idx, LUA_TTABLE);
     n = (uint32_t)lua_rawlen(L, idx);
-    if (n > LV_MAX_ACTIONS) luaL_error(L, "verve: update: the action mask has %d entries, at most %d", (int)n, LV_MAX_ACTIONS);
+    if (n > LV_MAX_CHOICES) luaL_error(L, "verve: update: the action mask has %d entries, at most %d", (int)n, LV_MAX_CHOICES);
     for (i = 0; i < n; ++i) {
         lua_rawgeti(L, idx, (int)i + 1);
         if (!lua_isboolean(L, -1))
@@ -522,7 +530,7 @@ static int lv_update(lua_State* L) {
         r = verve_agent_update(lv_open_agent(L), reward, o.discrete, o.n_discrete, o.continuous, o.n_continuous, dt,
                                &action);
     } else {
-        uint8_t mask[LV_MAX_ACTIONS];
+        uint8_t mask[LV_MAX_CHOICES];
         uint32_t n = lv_read_mask(L, 5, mask);
         r = verve_agent_update_masked(lv_open_agent(L), reward, o.discrete, o.n_discrete, o.continuous, o.n_continuous,
                                       dt, mask, n, &action);
@@ -536,7 +544,7 @@ static int lv_update(lua_State* L) {
 static int lv_update_demonstrated(lua_State* L) {
     float reward, dt;
     uint32_t action = 0, n = 0;
-    uint8_t mask[LV_MAX_ACTIONS];
+    uint8_t mask[LV_MAX_CHOICES];
     lv_obs o;
     verve_result r;
     luaL_checkudata(L, 1, LV_AGENT_MT);
@@ -592,15 +600,18 @@ static int lv_action_selection(lua_State* L) {
 static int lv_action_probabilities(lua_State* L) {
     verve_agent* a = lv_open_agent(L);
     verve_agent_desc d;
-    float p[LV_MAX_ACTIONS];
-    uint32_t i;
+    float p[LV_MAX_CHOICES];
+    uint32_t i, n = 0;
     verve_result r;
     verve_agent_desc_default(&d);
     r = verve_agent_get_desc(a, &d);
-    if (r == VERVE_OK) r = verve_agent_get_action_probabilities(a, p, d.num_actions);
+    /* One per action, or with action branches one per choice of each branch (each branch sums to 1). */
+    if (r == VERVE_OK) n = vb_action_choices(&d);
+    if (r == VERVE_OK && n > LV_MAX_CHOICES) return luaL_error(L, "verve: action_probabilities: %d values", (int)n);
+    if (r == VERVE_OK) r = verve_agent_get_action_probabilities(a, p, n);
     if (r != VERVE_OK) return lv_fail(L, "action_probabilities", r);
-    lua_createtable(L, (int)d.num_actions, 0);
-    for (i = 0; i < d.num_actions; ++i) {
+    lua_createtable(L, (int)n, 0);
+    for (i = 0; i < n; ++i) {
         lua_pushnumber(L, (lua_Number)p[i]);
         lua_rawseti(L, -2, (int)i + 1);
     }
@@ -1104,6 +1115,8 @@ static const luaL_Reg lv_agent_methods[] = {
     {"set_action_selection", lv_set_action_selection},
     {"action_selection", lv_action_selection},
     {"action_probabilities", lv_action_probabilities},
+    {"split_action", lv_split_action},
+    {"join_action", lv_join_action},
     {"reset_short_term_memory", lv_reset_short_term_memory},
     {"set_learning", lv_set_learning},
     {"learning", lv_learning},

@@ -18,7 +18,10 @@ export class Agent {
     this.brain = brain;  // keeps the wrapper alive with its body (the library keeps the brain itself)
     rt.track(this, '_verve_agent_destroy', handle);
     const desc = this.descriptor();
-    this.numActions = desc.actions;
+    this.numActions = desc.actions;  // combined actions (with branches, their product)
+    this.actionBranches = desc.actionBranches;
+    // Mask flags and probabilities: one per action, or one per choice of each branch.
+    this.numChoices = desc.actionBranches.length === 0 ? desc.actions : desc.actionBranches.reduce((a, b) => a + b, 0);
     this.numDiscrete = desc.discrete.length;
     this.numContinuous = desc.continuous.length;
   }
@@ -51,7 +54,7 @@ export class Agent {
       rt.check(rt.m._verve_agent_update(h, reward, d, obs.discrete.length, c, obs.continuous.length, dt, out));
       return rt.heap.u32[out >> 2];
     }
-    checkMask(mask, this.numActions);
+    checkMask(mask, this.numChoices, this.actionBranches);
     const [d, c, m, out] = rt.carve([4 * obs.discrete.length, 4 * obs.continuous.length, mask.length, 4]);
     const heap = rt.heap;
     writeObservation(heap, obs, d, c);
@@ -73,7 +76,7 @@ export class Agent {
     if (!Number.isInteger(action) || action < 0 || action >= this.numActions) {
       throw invalidArgument(`action must be an integer in 0..${this.numActions - 1}, got ${String(action)}`);
     }
-    if (mask !== undefined) checkMask(mask, this.numActions);
+    if (mask !== undefined) checkMask(mask, this.numChoices, this.actionBranches);
     const flags = mask === undefined ? 0 : mask.length;
     const rt = this.rt;
     const [d, c, m] = rt.carve([4 * obs.discrete.length, 4 * obs.continuous.length, Math.max(flags, 1)]);
@@ -110,6 +113,38 @@ export class Agent {
     this.rt.check(this.rt.m._verve_agent_truncate_episode(h, checkNumber('reward', reward)));
   }
 
+  /**
+   * Action branches: the choice of each branch (from 0) within a combined action (branch 0 varies
+   * fastest); one choice, the action itself, without branches.
+   */
+  splitAction(action) {
+    const h = this.live();
+    if (!Number.isInteger(action) || action < 0 || action >= this.numActions) {
+      throw invalidArgument(`action must be an integer in 0..${this.numActions - 1}, got ${String(action)}`);
+    }
+    const n = Math.max(this.actionBranches.length, 1);
+    const [out] = this.rt.carve([4 * n]);
+    this.rt.check(this.rt.m._verve_agent_split_action(h, action, out, n));
+    return Array.from(this.rt.heap.u32.subarray(out >> 2, (out >> 2) + n));
+  }
+
+  /** The combined action of one choice per branch (each from 0), as update() returns it. */
+  joinAction(choices) {
+    const h = this.live();
+    if (!Array.isArray(choices) && !ArrayBuffer.isView(choices)) {
+      throw invalidArgument(`joinAction takes an array of choices, one per branch (got ${typeof choices})`);
+    }
+    const n = choices.length;
+    for (let b = 0; b < n; ++b) {
+      const c = choices[b];
+      if (!Number.isInteger(c) || c < 0 || c > 0xffffffff) throw invalidArgument(`choices[${b}] must be an integer from 0, got ${String(c)}`);
+    }
+    const [p, out] = this.rt.carve([4 * Math.max(n, 1), 4]);
+    for (let b = 0; b < n; ++b) this.rt.heap.u32[(p >> 2) + b] = choices[b];
+    this.rt.check(this.rt.m._verve_agent_join_action(h, p, n, out));
+    return this.rt.heap.u32[out >> 2];
+  }
+
   resetShortTermMemory() {
     this.rt.check(this.rt.m._verve_agent_reset_short_term_memory(this.live()));
   }
@@ -142,10 +177,13 @@ export class Agent {
     return SELECTIONS[this.rt.heap.u32[out >> 2]];
   }
 
-  /** Each action's probability at the latest update, into `out` when given (no garbage). */
+  /**
+   * Each action's probability at the latest update, into `out` when given (no garbage). With action
+   * branches, each branch's choices in turn (the branches' sizes summed), each branch summing to 1.
+   */
   actionProbabilities(out) {
     const h = this.live();
-    const n = this.numActions;
+    const n = this.numChoices;
     if (out !== undefined && (!(out instanceof Float32Array) || out.length < n)) {
       throw invalidArgument(`actionProbabilities(out) needs a Float32Array of at least ${n} entries`);
     }

@@ -6,6 +6,7 @@ import { invalidArgument } from './errors.js';
 export const MAX_DISCRETE_SENSORS = 16;
 export const MAX_CONTINUOUS_SENSORS = 16;
 export const MAX_SENSOR_GROUPS = 64;
+export const MAX_ACTION_BRANCHES = 8;
 
 // Indices into the layout table of wasm/verve_web_layout.c.
 export const L = Object.freeze({
@@ -18,9 +19,9 @@ export const L = Object.freeze({
   statsSteps: 28, statsRbfCount: 29, statsLiveTraces: 30, statsValue: 31, statsTdError: 32,
   statsModelError: 33, statsPredictedUncertainty: 34, statsPlanningSteps: 35, statsCuriosityReward: 36,
   statsRbfBudgetHits: 37, statsClampedRewards: 38, batchWorkerCount: 39, adaptation: 40,
-  sensorGrouping: 41, numSensorGroups: 42, sensorGroups: 43,
+  sensorGrouping: 41, numSensorGroups: 42, sensorGroups: 43, numActionBranches: 44, actionBranches: 45,
 });
-export const LAYOUT_LENGTH = 44;
+export const LAYOUT_LENGTH = 46;
 
 const ENUMS = {
   allocation: ['dynamic', 'full'],
@@ -54,7 +55,7 @@ const SCALARS = [
   ['adaptation', 'adaptation', 'u64'],
   ['grouping', 'sensorGrouping', 'enum'],
 ];
-const KNOWN = new Set(['discrete', 'continuous', 'sensorGroups', ...SCALARS.map(([name]) => name)]);
+const KNOWN = new Set(['discrete', 'continuous', 'sensorGroups', 'actionBranches', ...SCALARS.map(([name]) => name)]);
 
 function describe(value) {
   if (value === null) return 'null';
@@ -147,7 +148,27 @@ export function checkDescriptor(desc) {
   }
   if (desc.sensorGroups !== undefined) out.sensorGroups = checkSensorGroups(desc.sensorGroups);
   checkGroupsFitSensors(out);
+  if (desc.actionBranches !== undefined) out.actionBranches = checkActionBranches(desc.actionBranches);
   return out;
+}
+
+/**
+ * actionBranches: the choices of each branch, e.g. [3, 3, 2]. Without `actions` the library sets
+ * it to their product; `actions` given must be that product (the library says so if not).
+ */
+function checkActionBranches(value) {
+  if (!Array.isArray(value) && !ArrayBuffer.isView(value)) {
+    throw invalidArgument(`descriptor.actionBranches must be an array of choice counts such as [3, 3, 2] (got ${describe(value)})`);
+  }
+  if (value.length > MAX_ACTION_BRANCHES) {
+    throw invalidArgument(`descriptor.actionBranches has ${value.length} branches, at most ${MAX_ACTION_BRANCHES}`);
+  }
+  return Array.from(value, (n, b) => {
+    if (!Number.isInteger(n) || n < 1 || n > 0xffffffff) {
+      throw invalidArgument(`descriptor.actionBranches[${b}] must be a number of choices, at least 1 (got ${describe(n)})`);
+    }
+    return n;
+  });
 }
 
 /** sensorGroups: a list of groups, each a list of continuous sensors (indices from 0). */
@@ -231,6 +252,12 @@ export function writeDescriptor(heap, layout, ptr, desc) {
       u32[p + 1] = high >>> 0;
     });
   }
+  if (desc.actionBranches) {
+    u32[at('numActionBranches') >> 2] = desc.actionBranches.length;
+    desc.actionBranches.forEach((n, b) => { u32[(at('actionBranches') >> 2) + b] = n; });
+    // Without `actions`: 0, which the library sets to the branches' product.
+    if (desc.actions === undefined && desc.actionBranches.length > 0) u32[at('numActions') >> 2] = 0;
+  }
   for (const [name, field, kind] of SCALARS) {
     const value = desc[name];
     if (value === undefined) continue;
@@ -267,6 +294,8 @@ export function readDescriptor(heap, layout, ptr) {
   const desc = {
     discrete: Array.from({ length: Math.min(nd, MAX_DISCRETE_SENSORS) }, (_, i) => u32[(at('discreteValues') >> 2) + i]),
     continuous: Array.from({ length: Math.min(nc, MAX_CONTINUOUS_SENSORS) }, (_, i) => ({ circular: u8[at('circular') + i] !== 0 })),
+    actionBranches: Array.from({ length: Math.min(u32[at('numActionBranches') >> 2], MAX_ACTION_BRANCHES) },
+      (_, b) => u32[(at('actionBranches') >> 2) + b]),
     sensorGroups: Array.from({ length: Math.min(u32[at('numSensorGroups') >> 2], MAX_SENSOR_GROUPS) }, (_, g) => {
       const p = (at('sensorGroups') >> 2) + 2 * g;
       const sensors = [];

@@ -43,9 +43,17 @@ export function checkNumber(what, value) {
   return value;
 }
 
-export function checkMask(mask, numActions) {
+/**
+ * A mask: one flag per action, or with action branches (`branches`, their sizes) one per choice of
+ * each branch, branch after branch (`numFlags` = the sizes summed).
+ */
+export function checkMask(mask, numFlags, branches = []) {
   if (!Array.isArray(mask) && !ArrayBuffer.isView(mask)) throw invalidArgument(`the action mask must be an array (got ${describe(mask)})`);
-  if (mask.length !== numActions) throw invalidArgument(`the action mask has ${mask.length} entries, the agent has ${numActions} actions`);
+  if (mask.length !== numFlags) {
+    throw invalidArgument(branches.length === 0
+      ? `the action mask has ${mask.length} entries, the agent has ${numFlags} actions`
+      : `the action mask has ${mask.length} entries, the agent's action branches [${branches.join(', ')}] have ${numFlags} choices (one flag per choice of each branch)`);
+  }
   for (let i = 0; i < mask.length; ++i) {
     const v = mask[i];
     if (typeof v !== 'boolean' && v !== 0 && v !== 1) throw invalidArgument(`mask[${i}] must be a boolean, 0 or 1 (got ${describe(v)})`);

@@ -26,6 +26,8 @@ static const uint32_t layout[] = {
     D(adaptation),
     /* 41: verve_agent_desc, V5 */
     D(sensor_grouping), D(num_sensor_groups), D(sensor_groups),
+    /* 44: verve_agent_desc, V6 */
+    D(num_action_branches), D(action_branches),
 };
 
 /* The table above and its length. */

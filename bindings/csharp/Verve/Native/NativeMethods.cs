@@ -108,6 +108,14 @@ namespace Verve.Native
             uint count);
 
         [DllImport(Library, CallingConvention = CallingConvention.Cdecl)]
+        internal static extern ResultCode verve_agent_split_action(AgentHandle agent, uint action, uint* choices,
+            uint branches);
+
+        [DllImport(Library, CallingConvention = CallingConvention.Cdecl)]
+        internal static extern ResultCode verve_agent_join_action(AgentHandle agent, uint* choices, uint branches,
+            out uint action);
+
+        [DllImport(Library, CallingConvention = CallingConvention.Cdecl)]
         internal static extern ResultCode verve_agent_reset_short_term_memory(AgentHandle agent);
 
         [DllImport(Library, CallingConvention = CallingConvention.Cdecl)]

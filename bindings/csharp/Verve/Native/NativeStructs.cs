@@ -14,6 +14,7 @@ namespace Verve.Native
         public const int MaxDiscreteSensors = 16;   // VERVE_MAX_DISCRETE_SENSORS
         public const int MaxContinuousSensors = 16; // VERVE_MAX_CONTINUOUS_SENSORS
         public const int MaxSensorGroups = 64;      // VERVE_MAX_SENSOR_GROUPS
+        public const int MaxActionBranches = 8;     // VERVE_MAX_ACTION_BRANCHES
 
         public uint struct_size;
         public uint num_discrete_sensors;
@@ -46,6 +47,8 @@ namespace Verve.Native
         public uint sensor_grouping; // V5
         public uint num_sensor_groups;
         public fixed ulong sensor_groups[MaxSensorGroups]; // bit i: continuous sensor i
+        public uint num_action_branches; // V6
+        public fixed uint action_branches[MaxActionBranches]; // choices per branch
     }
 
     [StructLayout(LayoutKind.Sequential)]

@@ -15,6 +15,10 @@ const brain = verve.createBrain({ continuous: 2, actions: 3 });
 const npc = verve.createAgent({ continuous: 12, actions: 4 });  // grouping 'auto': a lattice per sensor and per pair
 const custom = verve.createAgent({ continuous: 3, actions: 2, grouping: 'custom', sensorGroups: [[0, 1], [2]] });
 const groups: number[][] = custom.descriptor().sensorGroups;
+const branched = verve.createAgent({ continuous: 2, actionBranches: [3, 3, 2] });  // actions: 18
+const [move, turn, use]: number[] = branched.splitAction(branched.update(0, { continuous: [0, 0] }, 0.1));
+const joined: number = branched.joinAction([move, turn, use]);
+const sizes: number[] = branched.descriptor().actionBranches;
 const bodies = [brain.createBody(), brain.createBody()];
 const actions: Uint32Array = verve.createBatch().update(bodies, [0, 0], [{ continuous: [0, 0] }, null], 0.05);
 agent.setActionSelection('greedy');
@@ -27,10 +31,12 @@ try {
 verve.createAgent({ tauVale: 1 });
 // @ts-expect-error the grouping is 'auto', 'joint' or 'custom'
 verve.createAgent({ grouping: 'pairs' });
+// @ts-expect-error action branches are a list of sizes
+verve.createAgent({ actionBranches: 3 });
 // @ts-expect-error the selection is 'sample' or 'greedy'
 agent.setActionSelection('best');
 // @ts-expect-error a reward is a number
 agent.update('1', null, 0.1);
 console.log(action, p, values, copy.rbfCount(), actions, agent.stats().steps, verve.defaults().tauValue);
-console.log(groups);
-for (const x of [agent, copy, npc, custom, ...bodies, brain]) x.dispose();
+console.log(groups, joined, sizes, branched.numChoices);
+for (const x of [agent, copy, npc, custom, branched, ...bodies, brain]) x.dispose();

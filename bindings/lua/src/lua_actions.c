@@ -1,0 +1,92 @@
+/* lua_actions.c - action branches: the descriptor field and split/join of combined actions.
+ * Actions and choices are 1-based here, as every action in this module; 0-based at the C ABI. */
+#include <stdint.h>
+
+#include <lauxlib.h>
+
+#include "lua_actions.h"
+#include "lua_shared.h"
+
+#if LUA_VERSION_NUM < 502 /* LuaJIT: the Lua 5.1 API (lua_compat.h has the rest, unused here) */
+#  define lua_rawlen(L, i) lua_objlen((L), (i))
+#endif
+
+void lv_read_action_branches(lua_State* L, verve_agent_desc* d) {
+    uint32_t n, b;
+    if (!lua_istable(L, -1))
+        luaL_error(L, "verve: agent: descriptor field 'action_branches' must be a list of choice counts like {3, 3, 2} (got %s)",
+                   luaL_typename(L, -1));
+    n = (uint32_t)lua_rawlen(L, -1);
+    if (n > VERVE_MAX_ACTION_BRANCHES)
+        luaL_error(L, "verve: agent: %d action_branches; at most %d", (int)n, VERVE_MAX_ACTION_BRANCHES);
+    for (b = 0; b < n; ++b) {
+        lua_rawgeti(L, -1, (int)b + 1);
+        if (!lv_get_u32(L, -1, &d->action_branches[b]) || d->action_branches[b] == 0)
+            luaL_error(L, "verve: agent: action_branches[%d] must be a number of choices, at least 1 (got %s)",
+                       (int)b + 1, lua_type(L, -1) == LUA_TNUMBER ? lua_tostring(L, -1) : luaL_typename(L, -1));
+        lua_pop(L, 1);
+    }
+    d->num_action_branches = n;
+}
+
+void lv_finish_action_branches(verve_agent_desc* d, int actions_given) {
+    if (d->num_action_branches > 0 && !actions_given) d->num_actions = 0;
+}
+
+void lv_push_action_branches(lua_State* L, const verve_agent_desc* d) {
+    uint32_t b;
+    lua_createtable(L, (int)d->num_action_branches, 0);
+    for (b = 0; b < d->num_action_branches && b < VERVE_MAX_ACTION_BRANCHES; ++b) {
+        lua_pushinteger(L, (lua_Integer)d->action_branches[b]);
+        lua_rawseti(L, -2, (int)b + 1);
+    }
+}
+
+static uint32_t lv_branch_count(lua_State* L, const char* fn) {
+    verve_agent_desc d;
+    verve_result r;
+    verve_agent_desc_default(&d);
+    r = verve_agent_get_desc(lv_open_agent(L), &d);
+    if (r != VERVE_OK) lv_fail(L, fn, r);
+    return d.num_action_branches == 0 ? 1 : d.num_action_branches;
+}
+
+int lv_split_action(lua_State* L) {
+    uint32_t action = 0, choices[VERVE_MAX_ACTION_BRANCHES], n, b;
+    verve_result r;
+    luaL_checkudata(L, 1, LV_AGENT_MT);
+    if (!lv_get_u32(L, 2, &action) || action == 0)
+        return luaL_error(L, "verve: split_action: the action must be an integer from 1 to the number of actions");
+    n = lv_branch_count(L, "split_action");
+    r = verve_agent_split_action(lv_open_agent(L), action - 1, choices, n);
+    if (r != VERVE_OK) return lv_fail_indexed(L, "split_action", r);
+    lua_createtable(L, (int)n, 0);
+    for (b = 0; b < n; ++b) {
+        lua_pushinteger(L, (lua_Integer)choices[b] + 1);
+        lua_rawseti(L, -2, (int)b + 1);
+    }
+    return 1;
+}
+
+int lv_join_action(lua_State* L) {
+    uint32_t choices[VERVE_MAX_ACTION_BRANCHES], n, b, action = 0;
+    verve_result r;
+    luaL_checkudata(L, 1, LV_AGENT_MT);
+    luaL_checktype(L, 2, LUA_TTABLE);
+    n = (uint32_t)lua_rawlen(L, 2);
+    if (n == 0 || n > VERVE_MAX_ACTION_BRANCHES)
+        return luaL_error(L, "verve: join_action: give one choice per branch, 1 to %d of them (got %d)",
+                          VERVE_MAX_ACTION_BRANCHES, (int)n);
+    for (b = 0; b < n; ++b) {
+        lua_rawgeti(L, 2, (int)b + 1);
+        if (!lv_get_u32(L, -1, &choices[b]) || choices[b] == 0)
+            return luaL_error(L, "verve: join_action: choice %d must be an integer from 1 (got %s)", (int)b + 1,
+                              lua_type(L, -1) == LUA_TNUMBER ? lua_tostring(L, -1) : luaL_typename(L, -1));
+        --choices[b];
+        lua_pop(L, 1);
+    }
+    r = verve_agent_join_action(lv_open_agent(L), choices, n, &action);
+    if (r != VERVE_OK) return lv_fail_indexed(L, "join_action", r);
+    lua_pushinteger(L, (lua_Integer)action + 1);
+    return 1;
+}

@@ -1,0 +1,26 @@
+/* lua_actions.h - action branches in Lua (verve_c.h, verve_agent_desc V6): the descriptor's
+ * action_branches = {3, 3, 2}, and agent:split_action(a) / agent:join_action({c1, c2, c3}), which
+ * count actions and choices from 1 like every action in this module. */
+#ifndef VERVE_LUA_ACTIONS_H
+#define VERVE_LUA_ACTIONS_H
+
+#include <lua.h>
+#include <verve_c.h>
+
+/* The most flags in a mask / values in the probabilities: 4096 combined actions, plus one per
+ * branch of a single choice (their sum can exceed the product by as much). */
+#define LV_MAX_ACTIONS 4096 /* the library's limit on num_actions */
+#define LV_MAX_CHOICES (LV_MAX_ACTIONS + VERVE_MAX_ACTION_BRANCHES)
+
+/* action_branches = {...} on top of the stack into d. */
+void lv_read_action_branches(lua_State* L, verve_agent_desc* d);
+/* After the whole descriptor is read: with branches and no `actions` given, num_actions is 0 (the
+ * library sets it to their product). */
+void lv_finish_action_branches(verve_agent_desc* d, int actions_given);
+/* Pushes d's action_branches as a list (empty with one action set). */
+void lv_push_action_branches(lua_State* L, const verve_agent_desc* d);
+/* agent:split_action(a) -> {c1, c2, ...}; agent:join_action({c1, c2, ...}) -> a. */
+int lv_split_action(lua_State* L);
+int lv_join_action(lua_State* L);
+
+#endif
