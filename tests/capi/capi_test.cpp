@@ -30,6 +30,28 @@ verve_agent_desc smallDesc() {
 
 std::string lastError() { return verve_last_error(); }
 
+// verve_agent_create refuses `d` with a message that says `says`, and hands out nothing.
+void expectRefusedSaying(const verve_agent_desc& d, const char* says) {
+    verve_agent* agent = nullptr;
+    EXPECT_EQ(verve_agent_create(&d, &agent), VERVE_ERROR_INVALID_ARGUMENT) << says;
+    EXPECT_EQ(agent, nullptr);
+    EXPECT_NE(lastError().find(says), std::string::npos) << lastError();
+}
+
+// An agent made by a host built against an older header: its struct of `size` bytes (followed by
+// garbage the library must not read), shaped by `shape`. nullptr (and a failure) if refused.
+template <typename Shape>
+verve_agent* createFromOlderStruct(uint32_t size, Shape shape) {
+    unsigned char memory[sizeof(verve_agent_desc)];
+    std::memset(memory, 0xAB, sizeof memory);
+    verve_agent_desc* d = reinterpret_cast<verve_agent_desc*>(memory);
+    EXPECT_EQ(verve_agent_desc_init(d, size), VERVE_OK);
+    shape(*d);
+    verve_agent* agent = nullptr;
+    EXPECT_EQ(verve_agent_create(d, &agent), VERVE_OK) << verve_last_error();
+    return agent;
+}
+
 class CApi : public ::testing::Test {
 protected:
     void SetUp() override {
@@ -452,18 +474,11 @@ TEST(CApiDesc, SensorGroupsReachTheAgentAndAreValidated) {
         d.sensor_grouping = bad.grouping;
         d.num_sensor_groups = bad.count;
         d.sensor_groups[0] = bad.first;
-        agent = nullptr;
-        EXPECT_EQ(verve_agent_create(&d, &agent), VERVE_ERROR_INVALID_ARGUMENT) << bad.says;
-        EXPECT_EQ(agent, nullptr);
-        EXPECT_NE(lastError().find(bad.says), std::string::npos) << lastError();
+        expectRefusedSaying(d, bad.says);
     }
     // A V4 host's struct ends before the fields: Auto, whatever lies beyond.
-    unsigned char memory[sizeof(verve_agent_desc)];
-    std::memset(memory, 0xAB, sizeof memory);
-    verve_agent_desc* v4 = reinterpret_cast<verve_agent_desc*>(memory);
-    ASSERT_EQ(verve_agent_desc_init(v4, VERVE_AGENT_DESC_SIZE_V4), VERVE_OK);
-    v4->num_continuous_sensors = 8;
-    ASSERT_EQ(verve_agent_create(v4, &agent), VERVE_OK) << verve_last_error();
+    agent = createFromOlderStruct(VERVE_AGENT_DESC_SIZE_V4, [](verve_agent_desc& v4) { v4.num_continuous_sensors = 8; });
+    ASSERT_NE(agent, nullptr);
     ASSERT_EQ(verve_agent_get_desc(agent, &back), VERVE_OK);
     EXPECT_EQ(back.sensor_grouping, uint32_t{VERVE_GROUPING_AUTO});
     EXPECT_EQ(back.num_sensor_groups, 0u);
@@ -526,18 +541,11 @@ TEST(CApiDesc, ActionBranchesReachTheAgentAndAreValidated) {
         d.num_actions = bad.actions;
         d.num_action_branches = bad.count;
         d.action_branches[0] = bad.first;
-        agent = nullptr;
-        EXPECT_EQ(verve_agent_create(&d, &agent), VERVE_ERROR_INVALID_ARGUMENT) << bad.says;
-        EXPECT_EQ(agent, nullptr);
-        EXPECT_NE(lastError().find(bad.says), std::string::npos) << lastError();
+        expectRefusedSaying(d, bad.says);
     }
     // A V5 host's struct ends before the fields: one action set, whatever lies beyond.
-    unsigned char memory[sizeof(verve_agent_desc)];
-    std::memset(memory, 0xAB, sizeof memory);
-    verve_agent_desc* v5 = reinterpret_cast<verve_agent_desc*>(memory);
-    ASSERT_EQ(verve_agent_desc_init(v5, VERVE_AGENT_DESC_SIZE_V5), VERVE_OK);
-    v5->num_actions = 4;
-    ASSERT_EQ(verve_agent_create(v5, &agent), VERVE_OK) << verve_last_error();
+    agent = createFromOlderStruct(VERVE_AGENT_DESC_SIZE_V5, [](verve_agent_desc& v5) { v5.num_actions = 4; });
+    ASSERT_NE(agent, nullptr);
     ASSERT_EQ(verve_agent_get_desc(agent, &back), VERVE_OK);
     EXPECT_EQ(back.num_action_branches, 0u);
     EXPECT_EQ(back.num_actions, 4u);
