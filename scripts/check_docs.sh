@@ -70,6 +70,10 @@ doc docs/lua.md 'mkdir -p build/love-pet'
 doc docs/lua.md 'cp build/stage/lib/lua/5.1/verve.so build/stage/lib/libverve.so.0 build/love-pet/'
 doc docs/lua.md '(cd samples/love_pet && cmake -E tar cf ../../build/love-pet/verve-pet.love --format=zip main.lua conf.lua)'
 doc docs/lua.md 'love build/love-pet/verve-pet.love --headless --seed 1 --shown 30'
+doc docs/lua.md 'mkdir -p build/love-rays'
+doc docs/lua.md 'cp build/stage/lib/lua/5.1/verve.so build/stage/lib/libverve.so.0 build/love-rays/'
+doc docs/lua.md '(cd samples/love_rays && cmake -E tar cf ../../build/love-rays/verve-rays.love --format=zip *.lua)'
+doc docs/lua.md 'love build/love-rays/verve-rays.love --headless --minutes 20 --seed 1'
 if command -v xvfb-run >/dev/null; then
   doc docs/lua.md 'xvfb-run -a love build/love-npcs/verve-npcs.love --minutes 20 --fresh --screenshot npcs.png'
 fi
