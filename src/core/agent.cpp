@@ -55,7 +55,7 @@ Agent::Impl::Impl(std::shared_ptr<BrainState> shared, std::uint64_t seed)
     previousContinuous.assign(desc.continuousSensors.size(), 0.0f);
     normalized.reserve(desc.continuousSensors.size());
     probabilities.reserve(td.traceStride());  // chooseAction's scratch: one per trace component
-    probabilities.assign(td.numActions(), 0.0f);
+    probabilities.assign(td.columns(), 0.0f);
     recordProbabilities(nullptr, true);  // uniform (in each branch)
     stats.rbfCount = rep.featureCount();
 }
@@ -164,7 +164,7 @@ void normalizeBranch(float* p, std::uint32_t n, const std::uint8_t* flags, bool 
 
 void Agent::Impl::recordProbabilities(const std::uint8_t* allowed, bool uniform) {
     // One action set reads nothing of the (cold) branches.
-    if (td.branchCount() == 1) return normalizeBranch(probabilities.data(), td.numActions(), allowed, uniform);
+    if (td.branchCount() == 1) return normalizeBranch(probabilities.data(), td.columns(), allowed, uniform);
     const core::ActionBranches& branches = td.branches();
     for (std::uint32_t b = 0; b < branches.count; ++b) {
         const std::uint8_t* flags = allowed == nullptr ? nullptr : allowed + branches.offset[b];

@@ -24,15 +24,14 @@ void checkTimeStep(float dt) {
 
 void checkActionMask(const AgentDescriptor& desc, const std::uint8_t* allowed, std::size_t count) {
     if (allowed == nullptr) refuse("the action mask is NULL");
-    if (count != desc.actionChoices()) {
-        refuse("the action mask has " + std::to_string(count) + " flags, the agent has " +
-               (desc.actionBranches.empty() ? std::to_string(desc.numActions) + " actions"
-                                            : std::to_string(desc.actionChoices()) + " choices in its action branches"));
+    const ActionBranches branches = ActionBranches::of(desc);
+    if (count != branches.columns) {
+        refuse("the action mask has " + std::to_string(count) + " flags, the agent has " + std::to_string(branches.columns) +
+               (branches.count == 1 ? " actions" : " choices in its action branches"));
     }
     for (std::size_t a = 0; a < count; ++a) {
         if (allowed[a] > 1) refuse("action mask flag " + std::to_string(a) + " must be 0 or 1, got " + std::to_string(allowed[a]));
     }
-    const ActionBranches branches = ActionBranches::of(desc);
     for (std::uint32_t b = 0; b < branches.count; ++b) {
         const std::uint8_t* flags = allowed + branches.offset[b];
         if (std::find(flags, flags + branches.size[b], std::uint8_t{1}) != flags + branches.size[b]) continue;

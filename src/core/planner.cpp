@@ -27,7 +27,7 @@ bool sameFeatures(const std::vector<ActiveFeature>& a, const std::vector<ActiveF
 Planner::Planner(const AgentDescriptor& desc) : td_(ActionBranches::of(desc), desc.traceThreshold) {
     prediction_.discrete.resize(desc.discreteSensors.size());
     prediction_.continuous.resize(desc.continuousSensors.size());
-    activations_.reserve(std::size_t(td_.numActions()) + 1);  // chooseAction's scratch: the trace stride
+    activations_.reserve(std::size_t(td_.columns()) + 1);  // chooseAction's scratch: the trace stride
 }
 
 void Planner::reserve(std::uint32_t features) {
@@ -73,7 +73,7 @@ void Planner::weighEveryAction(const PlanSettings& s, const std::vector<ActiveFe
     const float sure = std::min(kTrustedEndUncertainty, s.uncertaintyThreshold);
     // Each action as if tried with equal chance: together one real step's worth of actor learning.
     // The critic and the model do not learn here, so every action is judged on the same values.
-    const std::uint32_t actions = td_.numActions();
+    const std::uint32_t actions = td_.columns();  // planning has one action set: a column per action
     const TdRates rates{0.0f, s.rates.policy / static_cast<float>(actions), s.rates.policyRange};
     td_.clear();  // the plan's traces; each step below decays by 0, which leaves none live
     for (std::uint32_t a = 0; a < actions; ++a) {

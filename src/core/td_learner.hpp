@@ -159,7 +159,7 @@ public:
         q.add(traces_.data(), traces_.size() * sizeof(float));
     }
 
-    std::uint32_t numActions() const { return columns_; }  // actor columns (one action set: its actions)
+    std::uint32_t columns() const { return columns_; }  // actor neurons (one action set: one per action)
     std::uint32_t branchCount() const { return branchCount_; }  // 1: one action set
     const ActionBranches& branches() const { return branches_; }  // cold: read only with branches
     std::uint32_t liveCount() const { return liveCount_; }

@@ -9,6 +9,7 @@
 
 #include <fuzzer/FuzzedDataProvider.h>
 
+#include "action_choices.h"
 #include "verve_c.h"
 
 namespace verve_fuzz {
@@ -107,13 +108,9 @@ inline verve_agent_desc anyDescriptor(FuzzedDataProvider& in) {
     return d;
 }
 
-// Flags in an accepted agent's action mask: one per choice of each branch, or num_actions.
-inline uint32_t actionChoices(const verve_agent_desc& d) {
-    if (d.num_action_branches == 0) return d.num_actions;
-    uint32_t n = 0;
-    for (uint32_t b = 0; b < d.num_action_branches; ++b) n += d.action_branches[b];
-    return n;
-}
+// Flags in an accepted agent's action mask: one per choice of each branch, or num_actions (as the
+// Lua and Godot bindings count them).
+inline uint32_t actionChoices(const verve_agent_desc& d) { return vb_action_choices(&d); }
 
 // Whether an accepted agent's combined `action` is one `mask` (actionChoices(d) flags) allows.
 inline bool maskAllows(const verve_agent_desc& d, const uint8_t* mask, uint32_t action) {
