@@ -104,6 +104,7 @@ typedef enum verve_sensor_kind {
 #define VERVE_MAX_CONTINUOUS_SENSORS 16
 #define VERVE_MAX_SENSOR_GROUPS 64
 #define VERVE_MAX_ACTION_BRANCHES 8
+#define VERVE_MAX_CONTINUOUS_ACTIONS 8
 
 typedef struct verve_agent verve_agent; /* opaque */
 typedef struct verve_brain verve_brain; /* opaque: a learner shared by many bodies (agents) */
@@ -162,6 +163,13 @@ typedef struct verve_agent_desc {
     uint32_t num_action_branches; /* 0 (default): one set of num_actions actions */
     uint32_t action_branches[VERVE_MAX_ACTION_BRANCHES]; /* choices per branch (>= 1 each); num_actions
                                                             is then 0 (set to their product) or it */
+
+    /* V7: continuous actions (docs/algorithm.md, "Continuous actions"): this many values in [-1, 1]
+       chosen on every step beside the discrete action (steering, throttle, a torque), read with
+       verve_agent_get_continuous_action. An agent with continuous actions only keeps one discrete
+       action: num_actions 0 then means 1. Planning needs discrete actions only. 64 bits wide so
+       that it starts exactly where V6 ended (V6 had 4 bytes of tail padding). */
+    uint64_t num_continuous_actions; /* 0 (default) .. VERVE_MAX_CONTINUOUS_ACTIONS */
 } verve_agent_desc;
 
 /* verve_agent_desc.adaptation bits (docs/algorithm.md, "Learning at defaults"). */
@@ -176,14 +184,16 @@ typedef struct verve_agent_desc {
 
 /* The sizes of verve_agent_desc a library accepts in struct_size: each release's full struct.
  * V1 ended after `seed` (no planning fields); V2 after discrete_prediction; V3 after
- * policy_weight_bound; V4 after adaptation; V5 after sensor_groups; V6 is the current struct. Fields beyond a smaller
+ * policy_weight_bound; V4 after adaptation; V5 after sensor_groups; V6 after action_branches; V7 is the
+ * current struct. Fields beyond a smaller
  * struct_size take their defaults. Any other size is refused. */
 #define VERVE_AGENT_DESC_SIZE_V1 ((uint32_t)offsetof(verve_agent_desc, planning))
 #define VERVE_AGENT_DESC_SIZE_V2 ((uint32_t)offsetof(verve_agent_desc, max_rbfs))
 #define VERVE_AGENT_DESC_SIZE_V3 ((uint32_t)offsetof(verve_agent_desc, adaptation))
 #define VERVE_AGENT_DESC_SIZE_V4 ((uint32_t)offsetof(verve_agent_desc, sensor_grouping))
 #define VERVE_AGENT_DESC_SIZE_V5 ((uint32_t)offsetof(verve_agent_desc, num_action_branches))
-#define VERVE_AGENT_DESC_SIZE_V6 ((uint32_t)sizeof(verve_agent_desc))
+#define VERVE_AGENT_DESC_SIZE_V6 ((uint32_t)offsetof(verve_agent_desc, num_continuous_actions))
+#define VERVE_AGENT_DESC_SIZE_V7 ((uint32_t)sizeof(verve_agent_desc))
 
 typedef struct verve_agent_stats {
     uint32_t struct_size;           /* VERVE_AGENT_STATS_SIZE_V1 or _V2 (sizeof): only that many bytes are written */
@@ -314,6 +324,11 @@ VERVE_API verve_result VERVE_CALL verve_agent_get_action_selection(const verve_a
  * action branches, each branch's choices in turn (count = the branches' sizes summed), each branch's
  * summing to 1. */
 VERVE_API verve_result VERVE_CALL verve_agent_get_action_probabilities(const verve_agent* agent, float* out,
+    uint32_t count);
+/* The continuous actions of the latest update (count = num_continuous_actions floats, each in
+ * [-1, 1]): sampled around the policy's mean, or the mean itself with VERVE_ACTION_GREEDY or on a
+ * demonstrated step. 0s before any update. A wrong count is refused. */
+VERVE_API verve_result VERVE_CALL verve_agent_get_continuous_action(const verve_agent* agent, float* out,
     uint32_t count);
 VERVE_API verve_result VERVE_CALL verve_agent_get_value(const verve_agent* agent, float* out_value);
 VERVE_API verve_result VERVE_CALL verve_agent_get_td_error(const verve_agent* agent, float* out_td_error);

@@ -104,6 +104,10 @@ public:
     // 1; 0 for masked actions), what Sample mode drew from; before any update, uniform. With action
     // branches, each branch's choices in turn (actionChoices() values), each branch summing to 1.
     const std::vector<float>& actionProbabilities() const;
+    // The continuous actions of the latest update (AgentDescriptor::continuousActions values, each
+    // in [-1, 1]): sampled around the policy's mean, or the mean itself with Greedy selection or on a
+    // demonstrated step. Before any update, 0s.
+    const std::vector<float>& continuousAction() const;
 
     const AgentDescriptor& descriptor() const;
     AgentStats stats() const;

@@ -65,6 +65,7 @@ struct DescriptorLimits {
     static constexpr std::uint64_t kMaxRbfs = 0xFFFFFFFEull;  // feature indices are 32-bit; also "unlimited"
     static constexpr std::uint32_t kMaxSensorGroups = 64;
     static constexpr std::uint32_t kMaxActionBranches = 8;
+    static constexpr std::uint32_t kMaxContinuousActions = 8;
 };
 
 // Which names validate() gives the fields in its messages: the C++ members or the C ABI's.
@@ -86,6 +87,12 @@ struct AgentDescriptor {
     // setActionBranches() sets both, branchChoice() and actionOf() convert. Masks and the policy's
     // probabilities then hold one flag or value per choice of each branch, branch after branch.
     std::vector<std::uint32_t> actionBranches;
+    // Continuous actions (docs/algorithm.md, "Continuous actions"): this many bounded values in
+    // [-1, 1] chosen on every step beside the discrete action (a steering angle, a throttle, a
+    // torque), read with Agent::continuousAction(). Each is learned as a Gaussian whose mean and
+    // spread follow the state; greedy play takes the mean. An agent that only steers keeps one
+    // discrete action (numActions 1). At most DescriptorLimits::kMaxContinuousActions.
+    std::uint32_t continuousActions = 0;
     RbfAllocation allocation = RbfAllocation::Dynamic;
     SensorGrouping grouping = SensorGrouping::Auto;
     // Custom grouping: one lattice per entry, a bitmask of continuous sensors (bit i: sensor i).

@@ -11,8 +11,9 @@
 namespace verve {
 
 struct AgentSnapshot {
-    // 2: sensor groups, 3: action branches (each written only by saves that have them).
-    static constexpr std::uint32_t kFormatVersion = 3;
+    // 2: sensor groups, 3: action branches, 4: continuous actions (each written only by saves that
+    // have them).
+    static constexpr std::uint32_t kFormatVersion = 4;
 
     AgentDescriptor descriptor;
     bool learning = true;
@@ -66,6 +67,12 @@ struct AgentSnapshot {
     std::vector<std::int32_t> previousDiscrete;   // previous observation (model input/targets)
     std::vector<float> previousContinuous;
     float lastDt = 0.1f;  // dt of the latest update (the duration of a terminal transition)
+    // Continuous actions (descriptor.continuousActions values each, or none in a save without
+    // short-term memory): the latest values, in [-1, 1], and the exploration noise, which runs on
+    // from its last value unless noiseRunning is false.
+    std::vector<float> continuousValues;
+    std::vector<float> continuousNoise;
+    bool continuousNoiseRunning = false;
 
     std::array<std::uint64_t, 4> rng{};  // generator state: same state, same future actions
 

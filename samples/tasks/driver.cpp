@@ -33,7 +33,7 @@ TrialResult runTrial(Agent& agent, Environment& env, std::uint64_t seed) {
     while (result.steps < cap) {
         env.observe(obs);
         const std::uint32_t action = agent.update(reward, obs, dt);
-        const StepResult step = env.act(action);
+        const StepResult step = env.actContinuous(action, agent.continuousAction());
         ++result.steps;
         result.rewardSum += step.reward;
         if (step.terminal) {

@@ -3,6 +3,7 @@
 #pragma once
 #include <cstdint>
 #include <string>
+#include <vector>
 
 #include "verve/agent_descriptor.hpp"
 #include "verve/observation.hpp"
@@ -28,6 +29,12 @@ public:
     virtual void beginTrial(std::uint64_t seed) = 0;
     virtual void observe(Observation& out) const = 0;
     virtual StepResult act(std::uint32_t action) = 0;
+    // The same with the agent's continuous actions (AgentDescriptor::continuousActions values in
+    // [-1, 1]): tasks that have some override it, the others ignore them.
+    virtual StepResult actContinuous(std::uint32_t action, const std::vector<float>& continuous) {
+        (void)continuous;
+        return act(action);
+    }
 };
 
 }  // namespace verve::tasks

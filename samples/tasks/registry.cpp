@@ -9,6 +9,7 @@
 #include "tasks/hot_plate.hpp"
 #include "tasks/maze.hpp"
 #include "tasks/sequential_actions.hpp"
+#include "tasks/steering_car.hpp"
 
 namespace verve::tasks {
 namespace {
@@ -78,6 +79,13 @@ std::vector<TaskInfo> makeRegistry() {
          branchedPlate(true), 100, 301, Metric::Steps},
         {"signaled-hot-plate-2d-18-moves", "2D signaled hot plate, the same 18 combined moves as one action set",
          branchedPlate(false), 100, 301, Metric::Steps},
+        // Continuous actions: the same car steered and throttled continuously, or by 3 x 3 branches.
+        {"steering-car", "a car drives to random targets, steering and throttle as 2 continuous actions",
+         [](std::uint64_t) { return std::make_unique<SteeringCar>(SteeringCar::Controls::Continuous); }, 20, 301,
+         Metric::Steps},
+        {"steering-car-branches", "the same car, steering and throttle as 2 action branches of 3 choices",
+         [](std::uint64_t) { return std::make_unique<SteeringCar>(SteeringCar::Controls::Branches); }, 20, 301,
+         Metric::Steps},
         {"maze1", "2D maze #1 (shortest path 22), discrete position", maze(maze1Layout, D, false), 50, 100,
          Metric::Steps},
         {"maze1-continuous", "2D maze #1, continuous position (resolution 15)", maze(maze1Layout, C, false), 50, 100,

@@ -1,5 +1,6 @@
 #include "capi/capi_desc.hpp"
 
+#include <cstddef>
 #include <cstring>
 #include <string>
 
@@ -15,7 +16,8 @@ void requireKnownSize(std::uint32_t size) {
         refuse("struct_size " + std::to_string(size) + " is not a verve_agent_desc size this library knows (" +
                std::to_string(VERVE_AGENT_DESC_SIZE_V1) + ", " + std::to_string(VERVE_AGENT_DESC_SIZE_V2) + ", " +
                std::to_string(VERVE_AGENT_DESC_SIZE_V3) + ", " + std::to_string(VERVE_AGENT_DESC_SIZE_V4) + ", " +
-               std::to_string(VERVE_AGENT_DESC_SIZE_V5) + " or " + std::to_string(VERVE_AGENT_DESC_SIZE_V6) +
+               std::to_string(VERVE_AGENT_DESC_SIZE_V5) + ", " + std::to_string(VERVE_AGENT_DESC_SIZE_V6) + " or " +
+               std::to_string(VERVE_AGENT_DESC_SIZE_V7) +
                "); fill the struct with verve_agent_desc_init");
     }
 }
@@ -28,8 +30,16 @@ void requireFlag(std::uint32_t value, const std::string& name) {
 
 bool isKnownDescSize(std::uint32_t size) noexcept {
     return size == VERVE_AGENT_DESC_SIZE_V1 || size == VERVE_AGENT_DESC_SIZE_V2 || size == VERVE_AGENT_DESC_SIZE_V3 ||
-           size == VERVE_AGENT_DESC_SIZE_V4 || size == VERVE_AGENT_DESC_SIZE_V5 || size == VERVE_AGENT_DESC_SIZE_V6;
+           size == VERVE_AGENT_DESC_SIZE_V4 || size == VERVE_AGENT_DESC_SIZE_V5 || size == VERVE_AGENT_DESC_SIZE_V6 ||
+           size == VERVE_AGENT_DESC_SIZE_V7;
 }
+
+// Each new field starts where the struct before it ended (the V6 struct's size: its last field's
+// end rounded up to the struct's alignment), so an older host's tail padding is never read as a field.
+constexpr std::size_t kV6End = offsetof(verve_agent_desc, action_branches) + sizeof(verve_agent_desc::action_branches);
+static_assert(VERVE_AGENT_DESC_SIZE_V6 == (kV6End + alignof(verve_agent_desc) - 1) / alignof(verve_agent_desc) * alignof(verve_agent_desc),
+              "num_continuous_actions starts where the V6 struct ended");
+static_assert(VERVE_MAX_CONTINUOUS_ACTIONS == DescriptorLimits::kMaxContinuousActions, "one limit");
 
 // The full current struct for a descriptor: the one place the two layouts meet field by field.
 static verve_agent_desc fullDesc(const AgentDescriptor& in) noexcept {
@@ -68,6 +78,7 @@ static verve_agent_desc fullDesc(const AgentDescriptor& in) noexcept {
     for (std::size_t i = 0; i < in.sensorGroups.size() && i < VERVE_MAX_SENSOR_GROUPS; ++i) d.sensor_groups[i] = in.sensorGroups[i];
     d.num_action_branches = static_cast<std::uint32_t>(in.actionBranches.size());  // validated: <= VERVE_MAX_ACTION_BRANCHES
     for (std::size_t i = 0; i < in.actionBranches.size() && i < VERVE_MAX_ACTION_BRANCHES; ++i) d.action_branches[i] = in.actionBranches[i];
+    d.num_continuous_actions = in.continuousActions;
     return d;
 }
 
@@ -148,6 +159,13 @@ AgentDescriptor toDescriptor(const verve_agent_desc& in) {
     out.actionBranches.assign(d.action_branches, d.action_branches + d.num_action_branches);
     // num_actions 0 with branches: their product (validate() refuses any other number but it).
     if (!out.actionBranches.empty() && d.num_actions == 0) out.setActionBranches(out.actionBranches);
+    if (d.num_continuous_actions > VERVE_MAX_CONTINUOUS_ACTIONS) {
+        refuse("num_continuous_actions is " + std::to_string(d.num_continuous_actions) + ", at most " +
+               std::to_string(VERVE_MAX_CONTINUOUS_ACTIONS));
+    }
+    out.continuousActions = static_cast<std::uint32_t>(d.num_continuous_actions);
+    // num_actions 0 with continuous actions only: the one discrete action they keep.
+    if (out.continuousActions != 0 && out.actionBranches.empty() && d.num_actions == 0) out.numActions = 1;
     out.validate(FieldNaming::CAbi);
     return out;
 }

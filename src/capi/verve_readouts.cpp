@@ -68,6 +68,19 @@ VERVE_API verve_result VERVE_CALL verve_agent_get_action_probabilities(const ver
     });
 }
 
+VERVE_API verve_result VERVE_CALL verve_agent_get_continuous_action(const verve_agent* agent, float* out, uint32_t count) {
+    return guarded(__func__, [&] {
+        const AgentUse use(agent);
+        requireArg(out, "out");
+        const std::vector<float>& v = use.agent().continuousAction();
+        if (count != v.size()) {
+            throw verve::Error(verve::ErrorCode::InvalidArgument, "count is " + std::to_string(count) + ", the agent has " +
+                                                                      std::to_string(v.size()) + " continuous actions");
+        }
+        std::copy(v.begin(), v.end(), out);
+    });
+}
+
 VERVE_API verve_result VERVE_CALL verve_agent_get_rbf_count(const verve_agent* agent, uint32_t* out_count) {
     return guarded(__func__, [&] {
         const AgentUse use(agent);

@@ -30,7 +30,8 @@ std::uint32_t stepsWithinTimeConstant(float dt, float tau) {
 
 core::WeightLayout weightLayoutFor(const AgentDescriptor& desc) {
     core::WeightLayout layout;
-    layout.numActions = core::ActionBranches::of(desc).columns;
+    // The actor's columns: the discrete neurons, then each continuous action's mean and spread.
+    layout.numActions = core::ActionBranches::of(desc).columns + 2 * desc.continuousActions;
     layout.modelColumns = core::PredictiveModel::columnsFor(desc);
     return layout;
 }
@@ -48,9 +49,10 @@ Agent::Impl::Impl(std::shared_ptr<BrainState> shared, std::uint64_t seed)
       rep(brain->rep),
       weights(brain->weights),
       rng(seed),
-      td(core::ActionBranches::of(desc), desc.traceThreshold),
+      td(core::ActionBranches::of(desc), 2 * desc.continuousActions, desc.traceThreshold),
       model(desc),
-      planner(desc) {
+      planner(desc),
+      continuous(desc.continuousActions) {
     previousDiscrete.assign(desc.discreteSensors.size(), 0);
     previousContinuous.assign(desc.continuousSensors.size(), 0.0f);
     normalized.reserve(desc.continuousSensors.size());
@@ -257,6 +259,7 @@ void Agent::Impl::noteBudgetReached() {
 
 void Agent::Impl::resetShortTermMemory() {
     td.clear();
+    continuous.resetNoise();
     hasPrevious = false;
     previous.clear();
     trialSeconds = 0.0f;
@@ -329,6 +332,8 @@ std::uint32_t Agent::Impl::step(float reward, ObservationView obs, float dt, Act
     std::uint32_t action = s.td.chooseAction(s.weights, s.current, s.rng, s.probabilities, s.latestValue,
                                              mask.allowed, !samples, hopeless, s.ahead);
     s.recordChoice(mask.allowed, hopeless, k);
+    // A demonstration names the discrete action only: the continuous ones then play their means.
+    const float* gradients = s.actContinuous(!samples, dt);
     if (demonstrated != nullptr) {
         // The demonstrator's action stands for the agent's own (core/demonstration.hpp).
         action = *demonstrated;
@@ -336,9 +341,16 @@ std::uint32_t Agent::Impl::step(float reward, ObservationView obs, float dt, Act
             core::imitate(s.weights, s.current, action, s.td.branches(), mask.allowed, k.rates.policy, k.rates.policyRange);
         }
     }
-    if (s.learning && s.learnsFromRealSteps()) s.td.mark(s.current, action, s.rep.featureCount());
+    if (s.learning && s.learnsFromRealSteps()) s.td.mark(s.current, action, s.rep.featureCount(), gradients);
     s.endStep(obs, dt, action);
     return action;
+}
+
+const float* Agent::Impl::actContinuous(bool greedy, float dt) {
+    if (td.continuousColumns() == 0) return nullptr;
+    continuous.act(probabilities.data() + td.columns(), rng, dt, greedy);
+    probabilities.resize(td.columns());
+    return continuous.gradients();
 }
 
 float Agent::Impl::realTdError(float r, const StepConstants& k) const {
@@ -429,6 +441,7 @@ void Agent::setActionSelection(ActionSelection mode) {
 
 ActionSelection Agent::actionSelection() const { return impl_->selection; }
 const std::vector<float>& Agent::actionProbabilities() const { return impl_->probabilities; }
+const std::vector<float>& Agent::continuousAction() const { return impl_->continuous.values(); }
 
 void Agent::setLearning(bool enabled) {
     if (impl_->learning == enabled) return;

@@ -40,6 +40,7 @@ constexpr Field kGrouping{"grouping", "sensor_grouping"};
 constexpr Field kSensorGroups{"sensorGroups", "sensor_groups"};
 constexpr Field kActionBranches{"actionBranches", "action_branches"};
 constexpr Field kPlanning{"planning", "planning"};
+constexpr Field kContinuousActions{"continuousActions", "num_continuous_actions"};
 
 class Validator {
 public:
@@ -196,6 +197,10 @@ void AgentDescriptor::validate(FieldNaming naming) const {
     v.require(std::isfinite(curiosityFactor) && curiosityFactor >= 0.0f,
               v.name(kCuriosityFactor) + " must be a finite number >= 0");
     v.requireAtMost(maxRbfs, Limits::kMaxRbfs, v.name(kMaxRbfs));
+    v.requireAtMost(continuousActions, Limits::kMaxContinuousActions, v.name(kContinuousActions));
+    // The model predicts per discrete action; a continuous one has no such index.
+    v.require(continuousActions == 0 || !planning, v.name(kPlanning) + " needs discrete actions only (no " +
+                                                      v.name(kContinuousActions) + ")");
     validateGroups(*this, v);
     validateDerivedSizes(*this, v);
 }

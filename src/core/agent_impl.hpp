@@ -6,6 +6,7 @@
 #include <vector>
 
 #include "core/brain_state.hpp"
+#include "core/continuous_actions.hpp"
 
 #include "core/planner.hpp"
 #include "core/predictive_model.hpp"
@@ -46,6 +47,9 @@ struct Agent::Impl {
     // choice leaves in the stats and probabilities.
     float hopelessFor(bool samples, const StepConstants& k) const;
     void recordChoice(const std::uint8_t* allowed, float hopeless, const StepConstants& k);
+    // The continuous actions' values from the sums chooseAction left after the discrete ones (then
+    // dropped from `probabilities`); `greedy`: their means. Their gradients for mark(), or nullptr.
+    const float* actContinuous(bool greedy, float dt);
     // The step's end: the teacher's memory, `current` becomes `previous`, the stats.
     void endStep(ObservationView obs, float dt, std::uint32_t action);
     // A trial ends (endEpisode, truncateEpisode): its length informs the horizon.
@@ -143,6 +147,8 @@ struct Agent::Impl {
     // What the agent did over the last seconds, for a teacher's judgements (Agent::teach); cold until
     // the first one.
     core::TeacherMemory teacher;
+    // Continuous actions (desc.continuousActions): their latest values and noise.
+    core::ContinuousActions continuous;
 };
 
 core::WeightLayout weightLayoutFor(const AgentDescriptor& desc);

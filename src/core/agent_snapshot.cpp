@@ -30,6 +30,25 @@ void requireRewardRange(float low, float high, const char* which) {
     }
 }
 
+// The continuous actions' short-term memory: none (a save without it) starts them afresh.
+void restoreContinuous(const AgentSnapshot& snap, Agent::Impl& s) {
+    const std::size_t n = s.desc.continuousActions;
+    if (snap.continuousValues.empty() && snap.continuousNoise.empty()) {
+        if (snap.continuousNoiseRunning) corrupt("the continuous actions' noise runs but is not saved");
+        return;
+    }
+    requireSize(snap.continuousValues.size(), n, "continuous action values");
+    requireSize(snap.continuousNoise.size(), n, "continuous action noise");
+    requireFinite(snap.continuousNoise, "continuous action noise");
+    for (float v : snap.continuousValues) {
+        if (!(v >= -1.0f && v <= 1.0f)) corrupt("a continuous action's value lies outside [-1, 1]");
+    }
+    for (float v : snap.continuousNoise) {
+        if (std::fabs(v) > core::ContinuousPolicy::kNoiseLimit) corrupt("a continuous action's noise is beyond any draw");
+    }
+    s.continuous.restore(snap.continuousNoise, snap.continuousNoiseRunning, snap.continuousValues);
+}
+
 }  // namespace
 
 std::unique_ptr<Agent::Impl> restoreAgent(const AgentSnapshot& snap) {
@@ -96,11 +115,15 @@ std::unique_ptr<Agent::Impl> restoreAgent(const AgentSnapshot& snap) {
             const auto f = snap.traceFeatures[i];
             if (f >= count || seen[f]) corrupt("trace list names feature " + std::to_string(f) + " twice or out of range");
             seen[f] = true;
-            // A live value trace lies in (0, 1] and bounds the feature's policy traces.
+            // A live value trace lies in (0, 1] and bounds the feature's policy traces (a continuous
+            // action's, which have either sign, in size).
             const float* e = snap.traces.data() + i * stride;
             if (!(e[0] > 0.0f && e[0] <= 1.0f)) corrupt("value trace of feature " + std::to_string(f) + " is outside (0, 1]");
+            const std::uint32_t signedFrom = 1 + s.td.columns();
             for (std::uint32_t k = 1; k < stride; ++k) {
-                if (e[k] < 0.0f || e[k] > e[0]) corrupt("policy trace of feature " + std::to_string(f) + " is outside [0, value trace]");
+                if (e[k] < (k < signedFrom ? 0.0f : -e[0]) || e[k] > e[0]) {
+                    corrupt("policy trace of feature " + std::to_string(f) + " is outside the value trace's range");
+                }
             }
         }
         s.td.restore(snap.traceFeatures, snap.traces, static_cast<std::uint32_t>(count));
@@ -133,6 +156,7 @@ std::unique_ptr<Agent::Impl> restoreAgent(const AgentSnapshot& snap) {
         s.previousDiscrete = snap.previousDiscrete;
         s.previousContinuous = snap.previousContinuous;
     }
+    restoreContinuous(snap, s);
     if (!std::isfinite(snap.lastDt) || snap.lastDt <= 0.0f) corrupt("last dt must be finite and > 0");
     s.lastDt = snap.lastDt;
     if (snap.rng[0] == 0 && snap.rng[1] == 0 && snap.rng[2] == 0 && snap.rng[3] == 0) corrupt("random generator state is all zero");
@@ -166,7 +190,7 @@ void snapshotBrain(const BrainState& brain, AgentSnapshot& snap) {
     snap.horizonTrialSeconds = brain.horizon.meanTrialSeconds;
     snap.horizonTrials = brain.horizon.trials;
     snap.tdMeanSquare = brain.tdScale.meanSquare;
-    snap.traceStride = 1 + core::ActionBranches::of(brain.desc).columns;
+    snap.traceStride = 1 + core::ActionBranches::of(brain.desc).columns + 2 * brain.desc.continuousActions;
 }
 
 Agent::Agent(const AgentSnapshot& snapshot) : impl_(restoreAgent(snapshot)) {}
@@ -189,6 +213,11 @@ AgentSnapshot Agent::snapshot() const {
     snap.previousDiscrete = s.previousDiscrete;
     snap.previousContinuous = s.previousContinuous;
     snap.lastDt = s.lastDt;
+    if (s.desc.continuousActions != 0) {
+        snap.continuousValues = s.continuous.values();
+        snap.continuousNoise = s.continuous.noise();
+        snap.continuousNoiseRunning = s.continuous.noiseRunning();
+    }
     snap.rng = s.rng.state();
     snap.steps = s.stats.steps;
     snap.modelError = s.stats.modelError;

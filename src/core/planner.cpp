@@ -24,7 +24,7 @@ bool sameFeatures(const std::vector<ActiveFeature>& a, const std::vector<ActiveF
 
 }  // namespace
 
-Planner::Planner(const AgentDescriptor& desc) : td_(ActionBranches::of(desc), desc.traceThreshold) {
+Planner::Planner(const AgentDescriptor& desc) : td_(ActionBranches::of(desc), 0, desc.traceThreshold) {
     prediction_.discrete.resize(desc.discreteSensors.size());
     prediction_.continuous.resize(desc.continuousSensors.size());
     activations_.reserve(std::size_t(td_.columns()) + 1);  // chooseAction's scratch: the trace stride

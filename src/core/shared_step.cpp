@@ -54,9 +54,10 @@ bool Agent::Impl::prepareShared(float reward, ObservationView obs, float dt, cor
     const std::uint32_t action = s.td.chooseActionStaged(s.weights, s.current, s.rng, s.probabilities, s.latestValue,
                                                          !samples, hopeless);
     s.recordChoice(nullptr, hopeless, k);
+    const float* gradients = s.actContinuous(!samples, dt);
     // The traces are the body's own: they decay and take the new step's at once.
     if (learns) s.td.decayStaged(k.traceDecay);
-    if (s.learning && s.learnsFromRealSteps()) s.td.mark(s.current, action, s.rep.featureCount());
+    if (s.learning && s.learnsFromRealSteps()) s.td.mark(s.current, action, s.rep.featureCount(), gradients);
     s.endStep(obs, dt, action);
     return true;
 }

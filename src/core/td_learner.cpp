@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 
+#include "core/continuous_actions.hpp"
 #include "core/prefetch.hpp"
 
 namespace verve::core {
@@ -59,8 +60,9 @@ VERVE_ALWAYS_INLINE std::uint32_t chooseIn(Rng& rng, float* y, std::uint32_t n, 
 
 }  // namespace
 
-TdLearner::TdLearner(const ActionBranches& branches, float traceThreshold)
-    : branchCount_(branches.count), columns_(branches.columns), stride_(1 + branches.columns), threshold_(traceThreshold),
+TdLearner::TdLearner(const ActionBranches& branches, std::uint32_t continuousColumns, float traceThreshold)
+    : branchCount_(branches.count), columns_(branches.columns), continuous_(continuousColumns),
+      stride_(1 + branches.columns + continuousColumns), threshold_(traceThreshold),
       kernels_(&kernels()), branches_(branches) {
     if (stride_ > kStackStride) step_.resize(stride_);
 }
@@ -125,7 +127,7 @@ void TdLearner::trainAndDecay(WeightTable& w, float delta, TdRates rates, float 
     float* step = stride_ <= kStackStride ? onStack : step_.data();
     const bool bounded = stepFor(delta, rates, step);
     // Remember the rows first: the kernel drops some from the live list as it goes.
-    if (bounded) trained_.assign(live_.begin(), live_.begin() + liveCount_);
+    if (bounded || continuous_ != 0) trained_.assign(live_.begin(), live_.begin() + liveCount_);
     TraceStep s;
     s.step = step;
     s.traceStride = stride_;
@@ -135,6 +137,15 @@ void TdLearner::trainAndDecay(WeightTable& w, float delta, TdRates rates, float 
     s.ahead = ahead;
     liveCount_ = kernels_->trainDecay(s, w.data().data(), traces_.data(), live_.data(), liveCount_);
     if (bounded) clampPolicy(w, trained_.data(), trained_.size(), rates.policyRange);
+    if (continuous_ != 0) clampContinuous(w, trained_.data(), trained_.size());
+}
+
+void TdLearner::clampContinuous(WeightTable& w, const std::uint32_t* rows, std::size_t count) const {
+    constexpr float bound = ContinuousPolicy::kWeightBound;
+    for (std::size_t i = 0; i < count; ++i) {
+        float* c = w.row(rows[i]) + WeightLayout::kPolicy + columns_;
+        for (std::uint32_t j = 0; j < continuous_; ++j) c[j] = std::clamp(c[j], -bound, bound);
+    }
 }
 
 void TdLearner::clampPolicy(WeightTable& w, const std::uint32_t* rows, std::size_t count, PolicyRange range) const {
@@ -153,7 +164,8 @@ void TdLearner::reserveLive(std::size_t more) {
     if (live_.size() < liveCount_ + more + 1) live_.resize(liveCount_ + more + 1);
 }
 
-void TdLearner::mark(const std::vector<ActiveFeature>& phi, std::uint32_t action, std::uint32_t featureCount) {
+void TdLearner::mark(const std::vector<ActiveFeature>& phi, std::uint32_t action, std::uint32_t featureCount,
+                     const float* continuous) {
     grow(featureCount);
     // The actor column of each branch's choice (one action set: the action).
     std::uint32_t column[ActionBranches::kMax];
@@ -197,6 +209,14 @@ void TdLearner::mark(const std::vector<ActiveFeature>& phi, std::uint32_t action
         for (std::size_t i = 0; i < n && columns > 1; ++i) {
             float* e = traces + strong[i].index * stride;
             for (std::uint32_t b = 1; b < columns; ++b) e[1 + column[b]] = std::max(strong[i].activation, e[1 + column[b]]);
+        }
+        // The continuous actions' accumulating traces, after the value trace took its max.
+        for (std::size_t i = 0; i < n && continuous != nullptr; ++i) {
+            float* e = traces + strong[i].index * stride + 1 + columns_;
+            const float limit = e[-1 - std::ptrdiff_t(columns_)];
+            for (std::uint32_t c = 0; c < continuous_; ++c) {
+                e[c] = std::clamp(e[c] + continuous[c] * strong[i].activation, -limit, limit);
+            }
         }
     }
 }

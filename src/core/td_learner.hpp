@@ -92,7 +92,9 @@ inline bool actionAllowed(const std::uint8_t* allowed, std::uint32_t a) { return
 class TdLearner {
 public:
     static constexpr float kStepLimit = 1e12f;  // trainAndDecay's clamp on a weight's step (traces <= 1)
-    TdLearner(const ActionBranches& branches, float traceThreshold);
+    // `continuousColumns`: the continuous actions' columns after the discrete ones
+    // (core/continuous_actions.hpp), 0 without.
+    TdLearner(const ActionBranches& branches, std::uint32_t continuousColumns, float traceThreshold);
 
     // `ahead`, in these three: a batch's next agent, asked for as the kernels go (prefetch.hpp).
     float value(const WeightTable& w, const std::vector<ActiveFeature>& phi, PrefetchQueue* ahead = nullptr) const;
@@ -143,8 +145,10 @@ public:
     }
 
     // e = max(e, phi) for the critic; e_a = max(e_a, phi) for the chosen action's neuron (each
-    // branch's, for a combined action).
-    void mark(const std::vector<ActiveFeature>& phi, std::uint32_t action, std::uint32_t featureCount);
+    // branch's, for a combined action). `continuous`: each continuous column's gradient g, whose
+    // trace accumulates e_c += g * phi, kept within +-e (the value trace still decides liveness).
+    void mark(const std::vector<ActiveFeature>& phi, std::uint32_t action, std::uint32_t featureCount,
+              const float* continuous = nullptr);
     void clear();
     // Room for `features` features and a mark() of up to `active` features: mark() and
     // trainAndDecay() then allocate nothing. Scratch follows what is marked, not the feature count.
@@ -160,6 +164,7 @@ public:
     }
 
     std::uint32_t columns() const { return columns_; }  // actor neurons (one action set: one per action)
+    std::uint32_t continuousColumns() const { return continuous_; }  // after them, in every row and trace
     std::uint32_t branchCount() const { return branchCount_; }  // 1: one action set
     const ActionBranches& branches() const { return branches_; }  // cold: read only with branches
     std::uint32_t liveCount() const { return liveCount_; }
@@ -175,13 +180,17 @@ private:
     // explains; returns whether the actor's range can be crossed (then the trained rows are clamped).
     bool stepFor(float delta, TdRates rates, float* step) const;
     void clampPolicy(WeightTable& w, const std::uint32_t* rows, std::size_t count, PolicyRange range) const;
+    // The continuous columns' weights within +-ContinuousPolicy::kWeightBound: their traces have
+    // either sign, so any step can cross it.
+    void clampContinuous(WeightTable& w, const std::uint32_t* rows, std::size_t count) const;
     void grow(std::uint32_t featureCount);
     void reserveLive(std::size_t more);  // room for `more` live entries beyond liveCount_
     float* trace(std::uint32_t feature) { return traces_.data() + std::size_t(feature) * stride_; }
 
     std::uint32_t branchCount_;  // 1: one action set (branches_, cold, is then never read)
     std::uint32_t columns_;  // actor columns: numActions, or the branches' sizes summed
-    std::uint32_t stride_;   // 1 + columns_: value trace, then one per actor column
+    std::uint32_t continuous_;  // continuous actions' columns, after them (0 without)
+    std::uint32_t stride_;   // 1 + columns_ + continuous_: value trace, then one per actor column
     float threshold_;
     std::vector<float> traces_;         // per feature, stride_ values; zero unless live
     std::vector<std::uint32_t> live_;   // live features in its first liveCount_ entries (sized by need)

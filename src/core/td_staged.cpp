@@ -2,6 +2,7 @@
 // weights on several threads at once, each thread owning a part of the features (shared_step.cpp).
 #include <algorithm>
 
+#include "core/continuous_actions.hpp"
 #include "core/prefetch.hpp"
 #include "core/td_learner.hpp"
 
@@ -73,6 +74,7 @@ void TdLearner::trainPart(WeightTable& w, std::uint32_t part) const {
         for (std::uint32_t c = 0; c < stride_; ++c) row[c] += step[c] * e[c];
     }
     if (stagedBounded_) clampPolicy(w, stagedLive_.data() + begin, end - begin, stagedRange_);
+    if (continuous_ != 0) clampContinuous(w, stagedLive_.data() + begin, end - begin);
 }
 
 std::uint32_t TdLearner::chooseActionStaged(const WeightTable& w, const std::vector<ActiveFeature>& phi, Rng& rng,
@@ -105,7 +107,11 @@ std::uint32_t TdLearner::chooseActionStaged(const WeightTable& w, const std::vec
                 const float live = e[0] != 0.0f ? strong[i].activation : 0.0f;
                 for (std::uint32_t c = 0; c < stride_; ++c) {
                     float moved = row[c] + stagedStep_[c] * e[c];
-                    if (c >= WeightLayout::kPolicy && stagedBounded_) moved = stagedRange_.clamp(moved);
+                    if (c >= WeightLayout::kPolicy + columns_) {
+                        moved = std::clamp(moved, -ContinuousPolicy::kWeightBound, ContinuousPolicy::kWeightBound);
+                    } else if (c >= WeightLayout::kPolicy && stagedBounded_) {
+                        moved = stagedRange_.clamp(moved);
+                    }
                     activations[c] += live * (moved - row[c]);
                 }
             }

@@ -1,4 +1,4 @@
-// Learned parameters, one contiguous row per feature: [value, policy[A], model outputs...].
+// Learned parameters, one contiguous row per feature: [value, policy[A], continuous[2C], model outputs...].
 // One active feature is one cache walk, whichever network reads it.
 #pragma once
 #include <algorithm>
@@ -16,7 +16,7 @@ void reserveRoom(Vector& v, std::size_t n) {
 }
 
 struct WeightLayout {
-    std::uint32_t numActions = 0;
+    std::uint32_t numActions = 0;    // actor columns: discrete neurons, then continuous actions' (2 each)
     std::uint32_t modelColumns = 0;  // predictive-model weights per feature (0 without planning)
 
     static constexpr std::uint32_t kValue = 0;

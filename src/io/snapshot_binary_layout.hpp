@@ -79,12 +79,19 @@ void transferPayload(Io& io, Snapshot& s, Flag& shortTerm, std::uint32_t version
         s.descriptor.grouping = legacyGrouping(s.descriptor);
     }
     if (version >= 7) io.list("action_branches", s.descriptor.actionBranches);
+    if (version >= 8) io.value("continuous_actions", s.descriptor.continuousActions);
     io.flag("short_term_memory", shortTerm);
     if (!shortTerm) return;
     if (version >= 5) io.value("trial_seconds", s.trialSeconds);
     io.value("trace_stride", s.traceStride);
     io.list("trace_features", s.traceFeatures);
     io.list("traces", s.traces);
+    // Only agents with continuous actions have these: every other save's bytes stay as before.
+    if (version >= 8 && s.descriptor.continuousActions != 0) {
+        io.list("continuous_values", s.continuousValues);
+        io.list("continuous_noise", s.continuousNoise);
+        io.flag("continuous_noise_running", s.continuousNoiseRunning);
+    }
     io.flag("has_previous", s.hasPrevious);
     if (!s.hasPrevious) return;
     io.value("previous_action", s.previousAction);

@@ -103,6 +103,13 @@ void checkTraces(const AgentSnapshot& s) {
     requireUnique("traceFeatures", s.traceFeatures);
     requireSize("traces", s.traces.size(), s.traceFeatures.size() * s.traceStride, "trace features x trace stride");
     requireFinite("traces", s.traces);
+    // The continuous actions' short-term memory: all of it, or none.
+    if (!s.continuousValues.empty() || !s.continuousNoise.empty()) {
+        requireSize("continuousValues", s.continuousValues.size(), s.descriptor.continuousActions, "one per continuous action");
+        requireSize("continuousNoise", s.continuousNoise.size(), s.descriptor.continuousActions, "one per continuous action");
+        requireFinite("continuousValues", s.continuousValues);
+        requireFinite("continuousNoise", s.continuousNoise);
+    }
 }
 
 void checkPrevious(const AgentSnapshot& s) {

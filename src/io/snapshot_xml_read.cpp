@@ -129,6 +129,7 @@ AgentDescriptor readDescriptor(pugi::xml_node root) {
     }
     for (pugi::xml_node s : n.children("sensor_group")) d.sensorGroups.push_back(readUint64(s, "sensors"));
     for (pugi::xml_node b : n.children("action_branch")) d.actionBranches.push_back(readUint32(b, "choices"));
+    if (n.attribute("continuous_actions")) d.continuousActions = readUint32(n, "continuous_actions");
     return d;
 }
 
@@ -177,6 +178,11 @@ void readShortTermMemory(pugi::xml_node root, AgentSnapshot& s) {
         readCount(t, s.traceFeatures.size(), "features");
         s.traces = readChildList<float>(t, "values");
         if (t.attribute("trial_seconds")) s.trialSeconds = readFloat(t, "trial_seconds");  // absent before 0.3
+    }
+    if (pugi::xml_node c = root.child("continuous_actions")) {
+        s.continuousNoiseRunning = readBool(c, "noise_running");
+        s.continuousValues = readChildList<float>(c, "values");
+        s.continuousNoise = readChildList<float>(c, "noise");
     }
     pugi::xml_node p = root.child("previous");
     s.hasPrevious = static_cast<bool>(p);

@@ -94,6 +94,7 @@ void writeDescriptor(pugi::xml_node root, const AgentDescriptor& d) {
     }
     for (auto g : d.sensorGroups) setNumber(n.append_child("sensor_group"), "sensors", g);
     for (auto b : d.actionBranches) setNumber(n.append_child("action_branch"), "choices", std::uint64_t{b});
+    if (d.continuousActions != 0) setNumber(n, "continuous_actions", std::uint64_t{d.continuousActions});
 }
 
 void writeState(pugi::xml_node root, const AgentSnapshot& s) {
@@ -135,6 +136,12 @@ void writeShortTermMemory(pugi::xml_node root, const AgentSnapshot& s) {
     appendList(t, "features", s.traceFeatures, 16);
     appendList(t, "values", s.traces, s.traceStride);
     setNumber(t, "trial_seconds", s.trialSeconds);
+    if (!s.continuousValues.empty() || !s.continuousNoise.empty()) {
+        pugi::xml_node c = root.append_child("continuous_actions");
+        c.append_attribute("noise_running").set_value(s.continuousNoiseRunning);
+        appendList(c, "values", s.continuousValues, 16);
+        appendList(c, "noise", s.continuousNoise, 16);
+    }
     if (!s.hasPrevious) return;
     pugi::xml_node p = root.append_child("previous");
     setNumber(p, "action", std::uint64_t{s.previousAction});
@@ -154,9 +161,10 @@ std::string snapshotToXml(const AgentSnapshot& snapshot, bool includeTraces) {
     }
     pugi::xml_document doc;
     pugi::xml_node root = doc.append_child(kRootElement);
-    // Version 1 unless the save has sensor groups, which an older library must refuse.
-    // The oldest version that has what the save holds: older libraries still read what they can.
-    const std::uint64_t version = !snapshot.descriptor.actionBranches.empty() ? 3u : !snapshot.descriptor.sensorGroups.empty() ? 2u : 1u;
+    // The oldest version that has what the save holds: older libraries still read what they can,
+    // and refuse what they would misread (groups, branches, continuous actions).
+    const AgentDescriptor& d = snapshot.descriptor;
+    const std::uint64_t version = d.continuousActions != 0 ? 4u : !d.actionBranches.empty() ? 3u : !d.sensorGroups.empty() ? 2u : 1u;
     setNumber(root, "format_version", version);
     writeDescriptor(root, snapshot.descriptor);
     writeState(root, snapshot);

@@ -624,7 +624,8 @@ TEST(CApiDesc, AnOldSmallerStructIsAcceptedAndTheRestDefaulted) {
 TEST(CApiDesc, GarbageStructSizesAreRefused) {
     for (uint32_t size : {0u, 4u, VERVE_AGENT_DESC_SIZE_V1 - 8, VERVE_AGENT_DESC_SIZE_V1 + 4,
                           VERVE_AGENT_DESC_SIZE_V2 + 4, VERVE_AGENT_DESC_SIZE_V3 + 4,
-                          VERVE_AGENT_DESC_SIZE_V4 + 8, VERVE_AGENT_DESC_SIZE_V5 + 8, VERVE_AGENT_DESC_SIZE_V6 + 8,
+                          VERVE_AGENT_DESC_SIZE_V4 + 8, VERVE_AGENT_DESC_SIZE_V5 + 8, VERVE_AGENT_DESC_SIZE_V6 + 4,
+                          VERVE_AGENT_DESC_SIZE_V7 + 8,
                           0xFFFFFFFFu}) {
         verve_agent_desc d = smallDesc();
         d.struct_size = size;

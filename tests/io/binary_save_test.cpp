@@ -181,10 +181,12 @@ std::string asVersion(std::string bytes, const AgentSnapshot& snap, std::uint32_
     const std::size_t at = bytes.find(std::string(tail, 21), io::kBinaryHeaderBytes);
     if (at == std::string::npos) return {};
     // After the final reward range: version 5's 16 bytes, version 6's 9 (the grouping and a list
-    // of groups, empty for these agents), version 7's 8 (an empty list of action branches), then
-    // the short-term memory flag and, from version 5, the trial's seconds.
-    if (version < 5 && bytes[at + 54] == 1) bytes.erase(at + 55, 4);
-    bytes.erase(at + 46, 8);
+    // of groups, empty for these agents), version 7's 8 (an empty list of action branches),
+    // version 8's 4 (no continuous actions), then the short-term memory flag and, from version 5,
+    // the trial's seconds.
+    if (version < 5 && bytes[at + 58] == 1) bytes.erase(at + 59, 4);
+    bytes.erase(at + 54, 4);
+    if (version < 7) bytes.erase(at + 46, 8);
     if (version < 6) bytes.erase(at + 37, 9);
     if (version < 5) bytes.erase(at + 21, 16);
     if (version == 1) bytes.erase(at + 4, 17);

@@ -13,10 +13,11 @@ constexpr double kTorques[] = {-kMaxTorque, 0.0, kMaxTorque};
 
 }  // namespace
 
-PendulumV1::PendulumV1() : ClassicTask(200, static_cast<float>(kDt)) {
+PendulumV1::PendulumV1(Torque torque) : ClassicTask(200, static_cast<float>(kDt)), torque_(torque) {
     descriptor_.addContinuousSensor(true);
     descriptor_.addContinuousSensor();
-    descriptor_.numActions = 3;
+    descriptor_.numActions = torque == Torque::Continuous ? 1 : 3;
+    descriptor_.continuousActions = torque == Torque::Continuous ? 1 : 0;
 }
 
 void PendulumV1::beginTrial(std::uint64_t seed) {
@@ -42,8 +43,19 @@ double PendulumV1::step(PendulumState& s, double torque) {
 }
 
 StepResult PendulumV1::act(std::uint32_t action) {
+    if (torque_ == Torque::Continuous) throw std::invalid_argument("PendulumV1::act: the torque is continuous");
     if (action >= 3) throw std::invalid_argument("PendulumV1::act: no such action");
-    gymnasiumReward_ = step(state_, kTorques[action]);
+    return torqued(kTorques[action]);
+}
+
+StepResult PendulumV1::actContinuous(std::uint32_t action, const std::vector<float>& continuous) {
+    if (torque_ == Torque::Discrete) return act(action);
+    if (action != 0 || continuous.size() != 1) throw std::invalid_argument("PendulumV1::actContinuous: one torque");
+    return torqued(kMaxTorque * static_cast<double>(continuous[0]));
+}
+
+StepResult PendulumV1::torqued(double torque) {
+    gymnasiumReward_ = step(state_, torque);
     return StepResult{static_cast<float>(gymnasiumReward_ / kLargestCost), false};
 }
 

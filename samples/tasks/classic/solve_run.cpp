@@ -33,7 +33,8 @@ SolveRun trainOnClassicTask(ClassicTask& task, AgentDescriptor descriptor, std::
         bool ended = false;
         for (std::uint32_t t = 0; t < task.maxStepsPerTrial() && run.steps < budget; ++t) {
             task.observe(obs);
-            const StepResult step = task.act(agent.update(reward, obs, dt));
+            const std::uint32_t action = agent.update(reward, obs, dt);
+            const StepResult step = task.actContinuous(action, agent.continuousAction());
             ++run.steps;
             episodeReturn += task.gymnasiumReward();
             reward = step.reward;
@@ -66,6 +67,7 @@ const std::vector<ClassicInfo>& classicTasks() {
         {"acrobot-v1", [] { return std::make_unique<AcrobotV1>(); }},
         {"mountain-car-v0", [] { return std::make_unique<MountainCarV0>(); }},
         {"pendulum-v1", [] { return std::make_unique<PendulumV1>(); }},
+        {"pendulum-v1-continuous", [] { return std::make_unique<PendulumV1>(PendulumV1::Torque::Continuous); }},
     };
     return tasks;
 }
