@@ -107,6 +107,9 @@ doc docs/experiments.md 'build/samples/tasks/verve-experiments run cue-change --
 doc docs/experiments.md 'build/samples/tasks/verve-experiments run cue-change --policy-weight-bound 0 --tau-value 0.1 --policy-multiplier 5 --csv cue-before.csv' \
   "build/samples/tasks/verve-experiments run cue-change --policy-weight-bound 0 --tau-value 0.1 --policy-multiplier 5 --csv $scratch/cue-before.csv"
 in_doc docs/experiments.md 'gnuplot docs/img/changing-world-cue.gp'   # rewrites the committed PNG: not run
+doc docs/experiments.md 'build/samples/tasks/verve-experiments run steering-car --runs 20 --trials 301 --defaults' \
+  'build/samples/tasks/verve-experiments run steering-car --runs 2 --trials 20 --defaults'
+doc docs/experiments.md 'verve-classic pendulum-v1-continuous' 'build/samples/tasks/verve-classic pendulum-v1-continuous --seeds 1 --budget 2000'
 doc docs/experiments.md 'build/samples/tasks/verve-classic acrobot-v1 --seeds 10'
 doc docs/experiments.md 'build/samples/tasks/verve-classic cart-pole-v1 --seeds 10 --set tau_value=0.01' \
   'build/samples/tasks/verve-classic cart-pole-v1 --seeds 2 --set tau_value=0.01'

@@ -59,6 +59,8 @@ signaled-hot-plate-1d-6-distractors   20   301  steps    271   301  optimal_~9.5
 signaled-hot-plate-1d-14-distractors  20   301  steps    271   301  optimal_~9.5_(16_sensors:_groups)
 signaled-hot-plate-2d-branches        20   301  steps    271   301  optimal_~4.9_(3x3x2_action_branches)
 signaled-hot-plate-2d-18-moves        20   301  steps    271   301  optimal_~4.9_(the_same_18_moves_as_one_set)
+steering-car                       20   301  steps    271   301  scripted_driver_73_(steering,_throttle:_2_continuous_actions)
+steering-car-branches              20   301  steps    271   301  scripted_driver_73_(the_same_car_by_3x3_branches)
 maze1                              20   100  steps     90   100  optimal_22
 maze1-continuous                   20   100  steps     90   100  optimal_22
 maze2                              10    51  steps     46    51  optimal_25
@@ -72,19 +74,20 @@ swapping-hot-plate-1d              50   300  steps    270   300  re-learns_the_o
 TASKS
 
 echo
-printf '%-16s %-34s %-34s %s\n' task "defaults: solved" "best setting: solved" "RL Zoo's tuned agent"
+printf '%-22s %-34s %-34s %s\n' task "defaults: solved" "best setting: solved" "RL Zoo's tuned agent"
 while read -r task best; do
   summary() { "$classic" "$task" --seeds "$seeds" "$@" | awk '/^# solved/ { sub(/;/, "", $5); printf "%s/%s, median %s", $3, $5, $8 }'; }
   d=$(summary "${candidate[@]}")
   b=skipped
   [ -n "${DEFAULTS_ONLY:-}" ] || b=$(summary $(for s in $best; do printf -- '--set %s ' "$s"; done))
   zoo=$("$classic" "$task" --seeds 1 --budget 1 | awk -F'RL Zoo ' 'NR == 1 { print $2 }')
-  printf '%-16s %-34s %-34s %s\n' "$task" "$d" "$b ($best)" "$zoo"
+  printf '%-22s %-34s %-34s %s\n' "$task" "$d" "$b ($best)" "$zoo"
 done <<'TASKS'
 cart-pole-v1     tau_discount=10 tau_value=0.01
 acrobot-v1       tau_discount=10 tau_value=0.01
 mountain-car-v0  tau_discount=10 tau_value=0.01
 pendulum-v1      resolution=16 tau_value=0.01
+pendulum-v1-continuous resolution=16
 TASKS
 
 # The Bullet scenes (verve-demo run SCENE --defaults), beside the scene's own settings (the thesis's

@@ -13,6 +13,7 @@ AgentDescriptor atLibraryDefaults(const AgentDescriptor& task) {
     d.sensorGroups = task.sensorGroups;
     d.numActions = task.numActions;
     d.actionBranches = task.actionBranches;  // how the actions are made up describes the actions
+    d.continuousActions = task.continuousActions;
     d.seed = task.seed;
     d.planning = task.planning;
     d.curiosity = task.curiosity;

@@ -554,6 +554,77 @@ TEST(CApiDesc, ActionBranchesReachTheAgentAndAreValidated) {
     verve_agent_destroy(agent);
 }
 
+TEST(CApiDesc, ContinuousActionsReachTheAgentAndAreValidated) {
+    verve_agent_desc d = smallDesc();
+    EXPECT_EQ(d.num_continuous_actions, 0u);
+    d.num_actions = 0;  // continuous actions only: the one discrete action they keep
+    d.num_continuous_actions = 2;
+    verve_agent* agent = nullptr;
+    ASSERT_EQ(verve_agent_create(&d, &agent), VERVE_OK) << verve_last_error();
+    verve_agent_desc back;
+    verve_agent_desc_default(&back);
+    ASSERT_EQ(verve_agent_get_desc(agent, &back), VERVE_OK);
+    EXPECT_EQ(back.num_actions, 1u);
+    EXPECT_EQ(back.num_continuous_actions, 2u);
+
+    float values[2] = {9.0f, 9.0f};
+    ASSERT_EQ(verve_agent_get_continuous_action(agent, values, 2), VERVE_OK) << verve_last_error();
+    EXPECT_EQ(values[0], 0.0f);  // before any update
+    const float obs[] = {0.2f};
+    const int32_t disc[] = {1};
+    uint32_t action = 9;
+    for (int t = 0; t < 20; ++t) {
+        ASSERT_EQ(verve_agent_update(agent, -0.1f, disc, 1, obs, 1, 0.05f, &action), VERVE_OK) << verve_last_error();
+        EXPECT_EQ(action, 0u);
+        ASSERT_EQ(verve_agent_get_continuous_action(agent, values, 2), VERVE_OK);
+        for (float v : values) EXPECT_TRUE(v >= -1.0f && v <= 1.0f) << v;
+    }
+    EXPECT_EQ(verve_agent_get_continuous_action(agent, values, 1), VERVE_ERROR_INVALID_ARGUMENT);
+    EXPECT_NE(lastError().find("the agent has 2 continuous actions"), std::string::npos) << lastError();
+    EXPECT_EQ(verve_agent_get_continuous_action(agent, nullptr, 2), VERVE_ERROR_INVALID_ARGUMENT);
+    EXPECT_EQ(verve_agent_get_continuous_action(nullptr, values, 2), VERVE_ERROR_INVALID_ARGUMENT);
+    float probability = 0.0f;
+    ASSERT_EQ(verve_agent_get_action_probabilities(agent, &probability, 1), VERVE_OK);
+    EXPECT_EQ(probability, 1.0f);
+
+    // Saved and loaded (XML and binary, with short-term memory): the same next values.
+    for (const bool binary : {false, true}) {
+        std::vector<char> bytes(1 << 20);
+        size_t size = bytes.size();
+        ASSERT_EQ(binary ? verve_agent_save_memory_binary(agent, bytes.data(), &size)
+                         : verve_agent_save_memory(agent, bytes.data(), &size),
+                  VERVE_OK)
+            << verve_last_error();
+        verve_agent* loaded = nullptr;
+        ASSERT_EQ(verve_agent_load_memory(bytes.data(), size, &loaded), VERVE_OK) << verve_last_error();
+        float a[2], b[2];
+        for (int t = 0; t < 10; ++t) {
+            ASSERT_EQ(verve_agent_update(agent, 0.1f, disc, 1, obs, 1, 0.05f, &action), VERVE_OK);
+            ASSERT_EQ(verve_agent_update(loaded, 0.1f, disc, 1, obs, 1, 0.05f, &action), VERVE_OK);
+            ASSERT_EQ(verve_agent_get_continuous_action(agent, a, 2), VERVE_OK);
+            ASSERT_EQ(verve_agent_get_continuous_action(loaded, b, 2), VERVE_OK);
+            EXPECT_EQ(std::memcmp(a, b, sizeof a), 0) << (binary ? "binary" : "XML");
+        }
+        verve_agent_destroy(loaded);
+    }
+    verve_agent_destroy(agent);
+
+    d.num_continuous_actions = 9;
+    expectRefusedSaying(d, "num_continuous_actions is 9, at most 8");
+    d.num_continuous_actions = uint64_t{1} << 32;  // not truncated into range
+    expectRefusedSaying(d, "num_continuous_actions is 4294967296, at most 8");
+    d.num_continuous_actions = 1;
+    d.planning = 1;
+    expectRefusedSaying(d, "planning needs discrete actions only");
+    // A V6 host's struct ends before the field: no continuous actions, whatever lies beyond.
+    agent = createFromOlderStruct(VERVE_AGENT_DESC_SIZE_V6, [](verve_agent_desc& v6) { v6.num_actions = 4; });
+    ASSERT_NE(agent, nullptr);
+    ASSERT_EQ(verve_agent_get_desc(agent, &back), VERVE_OK);
+    EXPECT_EQ(back.num_continuous_actions, 0u);
+    EXPECT_EQ(verve_agent_get_continuous_action(agent, values, 0), VERVE_OK);
+    verve_agent_destroy(agent);
+}
+
 TEST(CApiDesc, DefaultsMatchTheDocumentedOnes) {
     verve_agent_desc d;
     verve_agent_desc_default(&d);

@@ -64,7 +64,7 @@ extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size) {
         const Visible before = visible(agent);
         verve_result r = VERVE_OK;
         bool changes = false;  // a successful call of this kind may change what visible() reports
-        switch (in.ConsumeIntegralInRange<int>(0, 18)) {
+        switch (in.ConsumeIntegralInRange<int>(0, 19)) {
             case 0:
             case 1:
             case 2: {
@@ -195,6 +195,16 @@ extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size) {
                     for (uint32_t& c : choices) c = in.ConsumeIntegralInRange<uint32_t>(0, 5);
                     uint32_t joined = UINT32_MAX;
                     if (verve_agent_join_action(agent, choices, n, &joined) == VERVE_OK) VERVE_FUZZ_CHECK(joined < d.num_actions);
+                }
+                break;
+            }
+            case 19: {  // the continuous actions: their count or refused, each within [-1, 1]
+                const uint32_t n = static_cast<uint32_t>(d.num_continuous_actions);
+                std::vector<float> v(in.ConsumeBool() ? n : in.ConsumeIntegralInRange<uint32_t>(0, 10), 2.0f);
+                r = verve_agent_get_continuous_action(agent, v.empty() ? nullptr : v.data(), static_cast<uint32_t>(v.size()));
+                VERVE_FUZZ_CHECK((r == VERVE_OK) == (!v.empty() && v.size() == n));  // NULL out is refused
+                if (r == VERVE_OK) {
+                    for (float x : v) VERVE_FUZZ_CHECK(x >= -1.0f && x <= 1.0f);
                 }
                 break;
             }

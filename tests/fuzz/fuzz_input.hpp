@@ -105,6 +105,13 @@ inline verve_agent_desc anyDescriptor(FuzzedDataProvider& in) {
         for (uint32_t& b : d.action_branches) b = in.ConsumeIntegralInRange<int>(0, 31) == 0 ? anyCount(in, 5000) : in.ConsumeIntegralInRange<uint32_t>(1, 4);
         if (in.ConsumeIntegralInRange<int>(0, 7) != 0) d.num_actions = 0;
     }
+    // Continuous actions, now and then: mostly 1-3 (with num_actions 0, the one discrete action they
+    // keep), now and then beyond the limit or with planning (refused).
+    if (in.ConsumeIntegralInRange<int>(0, 3) == 0) {
+        d.num_continuous_actions = in.ConsumeIntegralInRange<int>(0, 31) == 0 ? in.ConsumeIntegral<uint64_t>()
+                                                                               : in.ConsumeIntegralInRange<uint64_t>(1, 3);
+        if (d.num_action_branches == 0 && in.ConsumeBool()) d.num_actions = 0;
+    }
     return d;
 }
 

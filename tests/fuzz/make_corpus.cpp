@@ -36,6 +36,7 @@ const Kind kKinds[] = {
     {"branches", [](verve_agent_desc& d) {
          d.num_discrete_sensors = 1; d.discrete_sensor_values[0] = 2; d.num_continuous_sensors = 1;
          d.num_actions = 12; d.num_action_branches = 3; d.action_branches[0] = 3; d.action_branches[1] = 2; d.action_branches[2] = 2; }},
+    {"steering", [](verve_agent_desc& d) { d.num_continuous_sensors = 3; d.num_actions = 2; d.num_continuous_actions = 2; }},
 };
 
 // A memory save of `object` (an agent, or a recording) by the two-call pattern, written to `path`.

@@ -150,5 +150,12 @@ TEST(AllocationFailure, EveryFailedAllocationLeavesAnAgentWithActionBranchesAsIt
     sweep(d);
 }
 
+// Continuous actions: their columns' traces and clamps, their values and noise.
+TEST(AllocationFailure, EveryFailedAllocationLeavesAnAgentWithContinuousActionsAsItWas) {
+    verve_agent_desc d = mixedDesc(false, 13);
+    d.num_continuous_actions = 2;
+    sweep(d);
+}
+
 }  // namespace
 }  // namespace verve::hardening

@@ -1,0 +1,89 @@
+// Continuous actions (docs/experiments.md, "Continuous actions"): a car that steers and throttles
+// to targets, at the library's defaults, beside the same car driven by 3 x 3 action branches and a
+// scripted driver; Pendulum-v1 with Gymnasium's continuous torque. Thresholds come from
+// measurements over these seeds (the defaults table's: base seed 1, 20 runs).
+#include <gtest/gtest.h>
+
+#include <cstdio>
+
+#include "learning_window.hpp"
+#include "tasks/classic/solve_run.hpp"
+#include "tasks/steering_car.hpp"
+#include "tasks/task_rng.hpp"
+
+using namespace verve::tasks;
+using namespace verve::tasks::testing;
+
+namespace {
+
+constexpr std::uint32_t kRuns = 20, kTrials = 301, kFirst = 271;
+
+// The scripted driver's steps per trial over the learners' trials (their seeds: runExperiment's).
+double scriptedSteps() {
+    SteeringCar car(SteeringCar::Controls::Continuous);
+    double steps = 0.0;
+    for (std::uint32_t t = 0; t < 300; ++t) {
+        car.beginTrial(mixSeed(1, t));
+        std::uint32_t n = 0;
+        while (n < SteeringCar::kMaxSteps) {
+            double steer = 0, throttle = 0;
+            car.scriptedControls(steer, throttle);
+            ++n;
+            if (car.drive(steer, throttle).terminal) break;
+        }
+        steps += n;
+    }
+    return steps / 300.0;
+}
+
+}  // namespace
+
+TEST(ContinuousActionsLearning, TheCarLearnsToReachItsTargetsSteeringAndThrottlingContinuously) {
+    const Window continuous = lateAtDefaults("steering-car", kRuns, kTrials, kFirst);
+    const Window branches = lateAtDefaults("steering-car-branches", kRuns, kTrials, kFirst);
+    print("continuous steering and throttle at defaults", continuous);
+    print("3 x 3 branches at defaults", branches);
+    // Measured: 182 steps late (first 30 trials: 336, a random driver's), 95% of targets reached;
+    // the branches 184 and 97%.
+    EXPECT_LE(continuous.steps, 200.0);
+    EXPECT_GE(continuous.success, 0.9);
+}
+
+// Known gap (not gating): the learners stay at 2.5x the scripted driver's time (73 steps).
+TEST(KnownGapContinuousActionsLearning, TheCarBeatsTheScriptedDriver) {
+    const Window continuous = lateAtDefaults("steering-car", kRuns, kTrials, kFirst);
+    const double scripted = scriptedSteps();
+    std::printf("[ measured ] scripted driver: %.1f steps per trial\n", scripted);
+    EXPECT_LE(continuous.steps, scripted);
+}
+
+namespace {
+
+// Seeds solved within `budget` steps on seeds 1..seeds, with `resolution` (0: the default).
+int pendulumSolved(std::uint64_t seeds, std::uint64_t budget, std::uint32_t resolution) {
+    int solved = 0;
+    for (std::uint64_t seed = 1; seed <= seeds; ++seed) {
+        auto task = findClassicTask("pendulum-v1-continuous")->make();
+        verve::AgentDescriptor d = task->agentDescriptor();
+        if (resolution != 0) d.resolution = resolution;
+        const SolveRun run = trainOnClassicTask(*task, d, budget, seed, true);
+        std::printf("[ measured ] pendulum-v1-continuous seed %llu: %s (last 100 mean %.1f)\n",
+                    static_cast<unsigned long long>(seed), run.stepsToSolve > 0 ? "solved" : "not solved", run.lastMean());
+        solved += run.stepsToSolve > 0;
+    }
+    return solved;
+}
+
+}  // namespace
+
+// The mechanism, with the one setting the discrete Pendulum-v1 needs too (docs/experiments.md):
+// Gymnasium's continuous torque swung up and held within the Zoo's PPO budget (100k steps).
+TEST(ContinuousActionsLearning, PendulumWithContinuousTorqueAtResolution16) {
+    // Measured: 12 of 16 seeds (the others spin, -1300 to -1440); 10 of seeds 1-12.
+    EXPECT_GE(pendulumSolved(12, 100000, 16), 9);
+}
+
+// Known gap (not gating): at the defaults (resolution 10) 2 of 10 seeds in 300k steps.
+TEST(KnownGapContinuousActionsLearning, PendulumWithContinuousTorqueAtDefaultsOnEverySeed) {
+    EXPECT_EQ(pendulumSolved(10, 100000, 0), 10);
+}
