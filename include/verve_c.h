@@ -173,8 +173,9 @@ typedef struct verve_agent_desc {
 } verve_agent_desc;
 
 /* verve_agent_desc.adaptation bits (docs/algorithm.md, "Learning at defaults"). */
-#define VERVE_ADAPT_HORIZON 1u      /* the discount horizon follows how long trials last; tau_discount
-                                       is then its shortest */
+#define VERVE_ADAPT_HORIZON 1u      /* the discount horizon follows how long trials last (their longest
+                                       stretches of an unchanged step reward); tau_discount is then its
+                                       shortest */
 #define VERVE_ADAPT_ACTOR_SCALE 2u  /* the actor's steps stay reward-sized when TD errors grow */
 #define VERVE_ADAPT_DECISION_RATE 4u /* an update less than 0.1 s after the previous one learns as much
                                         as a 0.1 s decision (learning rates, trace decay) */

@@ -34,8 +34,9 @@ enum class SensorGrouping : std::uint8_t {
 
 // What an agent may set for itself (AgentDescriptor::adaptation): bits.
 struct Adaptation {
-    // The discount horizon follows how long trials last: tauDiscount is then its shortest
-    // (docs/algorithm.md, "A horizon that follows the trials").
+    // The discount horizon follows how long trials last, or rather their longest stretches of an
+    // unchanged step reward: tauDiscount is then its shortest (docs/algorithm.md, "A horizon that
+    // follows the trials" and "... the rewards").
     static constexpr std::uint32_t Horizon = 1u << 0;
     // The actor's steps stay reward-sized when TD errors grow with a long horizon.
     static constexpr std::uint32_t ActorScale = 1u << 1;

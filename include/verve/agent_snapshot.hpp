@@ -56,8 +56,16 @@ struct AgentSnapshot {
     std::uint32_t traceStride = 0;
     std::vector<std::uint32_t> traceFeatures;
     std::vector<float> traces;
-    // Seconds of learning updates since the trial began (the horizon counts it when the trial ends).
+    // Seconds of learning updates since the trial began.
     float trialSeconds = 0.0f;
+    // The trial's stretches of an unchanged step reward (core/reward_stretch.hpp; the horizon
+    // counts the longest when the trial ends): the current one's seconds, the longest finished
+    // one's, the latest step reward and whether the trial has learned one. Saves that predate them
+    // read the whole trial as one stretch (stretchSeconds = trialSeconds), as the horizon then did.
+    float stretchSeconds = 0.0f;
+    float stretchLongest = 0.0f;
+    float stretchReward = 0.0f;
+    bool stretchSeen = false;
 
     // Short-term memory: the previous step, for the next TD error.
     bool hasPrevious = false;

@@ -68,7 +68,9 @@ float Agent::Impl::tauDiscount(float dt) const {
 }
 
 void Agent::Impl::endTrial() {
-    if (learning) brain->horizon.seeTrial(trialSeconds);
+    // The horizon follows how far the rewards that matter lie: the trial's longest stretch of an
+    // unchanged step reward (the whole trial with -1 a step until a goal; core/reward_stretch.hpp).
+    if (learning) brain->horizon.seeTrial(stretch.trialLongest());
 }
 
 void Agent::Impl::learnReal(float delta, const StepConstants& k, float decay) {
@@ -263,6 +265,7 @@ void Agent::Impl::resetShortTermMemory() {
     hasPrevious = false;
     previous.clear();
     trialSeconds = 0.0f;
+    stretch.reset();
     stats.liveTraces = 0;
 }
 
@@ -314,6 +317,7 @@ std::uint32_t Agent::Impl::step(float reward, ObservationView obs, float dt, Act
     const float r = s.learnedReward(reward);
     s.lastDt = dt;
     if (s.learning) s.trialSeconds += dt;
+    if (s.learning) s.stretch.see(s.hasPrevious, r, dt);
 
     const bool plans = s.learning && s.desc.planning;
     const StepConstants k = s.constantsFor(dt);

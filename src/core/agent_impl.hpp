@@ -7,6 +7,7 @@
 
 #include "core/brain_state.hpp"
 #include "core/continuous_actions.hpp"
+#include "core/reward_stretch.hpp"
 
 #include "core/planner.hpp"
 #include "core/predictive_model.hpp"
@@ -52,7 +53,8 @@ struct Agent::Impl {
     const float* actContinuous(bool greedy, float dt);
     // The step's end: the teacher's memory, `current` becomes `previous`, the stats.
     void endStep(ObservationView obs, float dt, std::uint32_t action);
-    // A trial ends (endEpisode, truncateEpisode): its length informs the horizon.
+    // A trial ends (endEpisode, truncateEpisode): its longest stretch of an unchanged step reward
+    // informs the horizon.
     void endTrial();
     void resetShortTermMemory();
     // Planning mode (desc.planning): the model learns the previous real transition, and after a
@@ -127,6 +129,7 @@ struct Agent::Impl {
     std::vector<float> previousContinuous;
     float lastDt = 0.1f;  // dt of the latest update: the duration of a terminal transition
     float trialSeconds = 0.0f;  // learning updates' dt since the trial began
+    core::RewardStretch stretch;  // the trial's stretches of an unchanged step reward (the horizon's)
 
     // V(s) of the latest state as the weights give it; stats.value reports it within the value
     // bounds, as every TD error uses it.

@@ -131,6 +131,11 @@ std::unique_ptr<Agent::Impl> restoreAgent(const AgentSnapshot& snap) {
 
     if (!(std::isfinite(snap.trialSeconds) && snap.trialSeconds >= 0.0f)) corrupt("the trial's seconds must be finite and >= 0");
     s.trialSeconds = snap.trialSeconds;
+    if (!(std::isfinite(snap.stretchSeconds) && snap.stretchSeconds >= 0.0f && std::isfinite(snap.stretchLongest) &&
+          snap.stretchLongest >= 0.0f && snap.stretchReward >= -1.0f && snap.stretchReward <= 1.0f)) {
+        corrupt("the trial's reward stretches must be finite lengths >= 0 and a reward within [-1, 1]");
+    }
+    s.stretch = core::RewardStretch{snap.stretchSeconds, snap.stretchLongest, snap.stretchReward, snap.stretchSeen};
     s.hasPrevious = snap.hasPrevious;
     if (snap.hasPrevious) {
         requireSize(snap.previousActivations.size(), snap.previousFeatures.size(), "previous activations");
@@ -204,6 +209,10 @@ AgentSnapshot Agent::snapshot() const {
     snap.traceFeatures = s.td.liveFeatures();
     snap.traces = s.td.liveTraces();
     snap.trialSeconds = s.trialSeconds;
+    snap.stretchSeconds = s.stretch.seconds;
+    snap.stretchLongest = s.stretch.longest;
+    snap.stretchReward = s.stretch.last;
+    snap.stretchSeen = s.stretch.seen;
     snap.hasPrevious = s.hasPrevious;
     for (const auto& f : s.previous) {
         snap.previousFeatures.push_back(f.index);

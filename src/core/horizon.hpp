@@ -3,7 +3,9 @@
 // a horizon much shorter than the way there reads every state at the same floor, and nothing can
 // be learned (Acrobot-v1 and MountainCar-v0 never learned at the 1 s default). How long trials
 // last measures that distance for the agent: the horizon is kTrialsPerHorizon times the recent
-// mean trial length, never shorter than tau_discount and never longer than kMaxSteps decisions
+// mean trial length (of each trial's longest stretch of an unchanged step reward, which is the
+// whole trial with -1 a step: core/reward_stretch.hpp), never shorter than tau_discount and never
+// longer than kMaxSteps decisions
 // (further than that, values are sums of thousands of rewards whose differences the critic cannot
 // resolve: the 40-cell corridor took 431 steps at 1000, 39 at 300). A task whose trials never end
 // keeps tau_discount.

@@ -83,6 +83,14 @@ void transferPayload(Io& io, Snapshot& s, Flag& shortTerm, std::uint32_t version
     io.flag("short_term_memory", shortTerm);
     if (!shortTerm) return;
     if (version >= 5) io.value("trial_seconds", s.trialSeconds);
+    if (version >= 8) {
+        io.value("stretch_seconds", s.stretchSeconds);
+        io.value("stretch_longest", s.stretchLongest);
+        io.value("stretch_reward", s.stretchReward);
+        io.flag("stretch_seen", s.stretchSeen);
+    } else if constexpr (!std::is_const_v<Snapshot>) {
+        s.stretchSeconds = s.trialSeconds;  // the whole trial one stretch, as the horizon then saw it
+    }
     io.value("trace_stride", s.traceStride);
     io.list("trace_features", s.traceFeatures);
     io.list("traces", s.traces);

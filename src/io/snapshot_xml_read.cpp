@@ -178,6 +178,11 @@ void readShortTermMemory(pugi::xml_node root, AgentSnapshot& s) {
         readCount(t, s.traceFeatures.size(), "features");
         s.traces = readChildList<float>(t, "values");
         if (t.attribute("trial_seconds")) s.trialSeconds = readFloat(t, "trial_seconds");  // absent before 0.3
+        // Absent before the horizon followed the rewards: the whole trial one stretch.
+        s.stretchSeconds = t.attribute("stretch_seconds") ? readFloat(t, "stretch_seconds") : s.trialSeconds;
+        if (t.attribute("stretch_longest")) s.stretchLongest = readFloat(t, "stretch_longest");
+        if (t.attribute("stretch_reward")) s.stretchReward = readFloat(t, "stretch_reward");
+        if (t.attribute("stretch_seen")) s.stretchSeen = readBool(t, "stretch_seen");
     }
     if (pugi::xml_node c = root.child("continuous_actions")) {
         s.continuousNoiseRunning = readBool(c, "noise_running");

@@ -136,6 +136,10 @@ void writeShortTermMemory(pugi::xml_node root, const AgentSnapshot& s) {
     appendList(t, "features", s.traceFeatures, 16);
     appendList(t, "values", s.traces, s.traceStride);
     setNumber(t, "trial_seconds", s.trialSeconds);
+    setNumber(t, "stretch_seconds", s.stretchSeconds);
+    setNumber(t, "stretch_longest", s.stretchLongest);
+    setNumber(t, "stretch_reward", s.stretchReward);
+    t.append_attribute("stretch_seen").set_value(s.stretchSeen);
     if (!s.continuousValues.empty() || !s.continuousNoise.empty()) {
         pugi::xml_node c = root.append_child("continuous_actions");
         c.append_attribute("noise_running").set_value(s.continuousNoiseRunning);

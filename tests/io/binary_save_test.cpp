@@ -165,6 +165,13 @@ void asBeforeAdaptation(AgentSnapshot& snap) {
     snap.horizonTrials = 0;
 }
 
+// What a save from before version 8 reads: the whole trial one stretch of an unchanged reward.
+void asBeforeStretches(AgentSnapshot& snap) {
+    snap.stretchSeconds = snap.trialSeconds;
+    snap.stretchLongest = snap.stretchReward = 0.0f;
+    snap.stretchSeen = false;
+}
+
 // Version 1 (before the reward range) is version 2 without the range's 8 bytes after the weights.
 // Such a save loads with the widest range, [-1, 1], the value bound version 1 used.
 // The save of `snap` as an older binary format version wrote it: the fields that version did not
@@ -184,7 +191,10 @@ std::string asVersion(std::string bytes, const AgentSnapshot& snap, std::uint32_
     // of groups, empty for these agents), version 7's 8 (an empty list of action branches),
     // version 8's 4 (no continuous actions), then the short-term memory flag and, from version 5,
     // the trial's seconds.
-    if (version < 5 && bytes[at + 58] == 1) bytes.erase(at + 59, 4);
+    // With short-term memory, version 8's 13 bytes of reward stretches follow the trial's seconds.
+    const bool shortTerm = bytes[at + 58] == 1;
+    if (shortTerm) bytes.erase(at + 63, 13);
+    if (version < 5 && shortTerm) bytes.erase(at + 59, 4);
     bytes.erase(at + 54, 4);
     if (version < 7) bytes.erase(at + 46, 8);
     if (version < 6) bytes.erase(at + 37, 9);
@@ -218,6 +228,7 @@ TEST(BinarySave, Version1SavesLoadWithTheWidestRewardRange) {
     snap.modelPredictsChange = false;
     snap.finalRewardLow = snap.finalRewardHigh = 0.0f;
     asBeforeAdaptation(snap);
+    asBeforeStretches(snap);
     expectSameSnapshot(snap, loaded);
 }
 
@@ -235,16 +246,18 @@ TEST(BinarySave, Version5SavesOfManySensorsKeepTheirOneLattice) {
     ASSERT_FALSE(bytes.empty());
     const AgentSnapshot loaded = loadAgentFromMemory(bytes.data(), bytes.size()).snapshot();
     EXPECT_EQ(loaded.descriptor.grouping, SensorGrouping::Joint);
+    asBeforeStretches(snap);
     expectSameSnapshot(snap, loaded);
 }
 
 TEST(BinarySave, Version6SavesHaveOneActionSet) {
     Agent agent = trainedAgent(iotest::mixedDescriptor(), 410);
-    const AgentSnapshot snap = agent.snapshot();
+    AgentSnapshot snap = agent.snapshot();
     const std::string bytes = asVersion(binarySave(agent), snap, 6);
     ASSERT_FALSE(bytes.empty());
     const AgentSnapshot loaded = loadAgentFromMemory(bytes.data(), bytes.size()).snapshot();
     EXPECT_TRUE(loaded.descriptor.actionBranches.empty());
+    asBeforeStretches(snap);
     expectSameSnapshot(snap, loaded);
 }
 
@@ -258,6 +271,7 @@ TEST(BinarySave, Version3SavesReadNoFinalRewardRange) {
     const AgentSnapshot loaded = loadAgentFromMemory(bytes.data(), bytes.size()).snapshot();
     snap.finalRewardLow = snap.finalRewardHigh = 0.0f;
     asBeforeAdaptation(snap);
+    asBeforeStretches(snap);
     expectSameSnapshot(snap, loaded);
 }
 
@@ -271,6 +285,7 @@ TEST(BinarySave, Version2SavesKeepAModelThatPredictsPositions) {
     snap.modelPredictsChange = false;
     snap.finalRewardLow = snap.finalRewardHigh = 0.0f;
     asBeforeAdaptation(snap);
+    asBeforeStretches(snap);
     expectSameSnapshot(snap, loaded.snapshot());
     // It learns on as it did, and its next save says so.
     iotest::Feed feed(5);

@@ -171,6 +171,13 @@ inline void expectSameSnapshot(const AgentSnapshot& a, const AgentSnapshot& b, b
     EXPECT_EQ(a.traceFeatures, b.traceFeatures);
     EXPECT_TRUE(sameBits(a.traces, b.traces));
     EXPECT_EQ(std::memcmp(&a.trialSeconds, &b.trialSeconds, sizeof(float)), 0);
+    EXPECT_EQ(std::memcmp(&a.stretchSeconds, &b.stretchSeconds, sizeof(float)), 0);
+    EXPECT_EQ(std::memcmp(&a.stretchLongest, &b.stretchLongest, sizeof(float)), 0);
+    EXPECT_EQ(std::memcmp(&a.stretchReward, &b.stretchReward, sizeof(float)), 0);
+    EXPECT_EQ(a.stretchSeen, b.stretchSeen);
+    EXPECT_TRUE(sameBits(a.continuousValues, b.continuousValues));
+    EXPECT_TRUE(sameBits(a.continuousNoise, b.continuousNoise));
+    EXPECT_EQ(a.continuousNoiseRunning, b.continuousNoiseRunning);
     EXPECT_EQ(a.hasPrevious, b.hasPrevious);
     if (a.hasPrevious && b.hasPrevious) {
         EXPECT_EQ(a.previousFeatures, b.previousFeatures);

@@ -43,13 +43,14 @@ TEST(ContinuousActionsLearning, TheCarLearnsToReachItsTargetsSteeringAndThrottli
     const Window branches = lateAtDefaults("steering-car-branches", kRuns, kTrials, kFirst);
     print("continuous steering and throttle at defaults", continuous);
     print("3 x 3 branches at defaults", branches);
-    // Measured: 182 steps late (first 30 trials: 336, a random driver's), 95% of targets reached;
-    // the branches 184 and 97%.
-    EXPECT_LE(continuous.steps, 200.0);
-    EXPECT_GE(continuous.success, 0.9);
+    // Measured: 82.8 steps late, 99.8% of targets reached; the branches 96.5 and 100%. Before the
+    // horizon followed the rewards (core/reward_stretch.hpp): 182 and 184, with a 15 s horizon
+    // under which driving slowly earned the same progress.
+    EXPECT_LE(continuous.steps, 95.0);
+    EXPECT_GE(continuous.success, 0.98);
 }
 
-// Known gap (not gating): the learners stay at 2.5x the scripted driver's time (73 steps).
+// Known gap (not gating): the learners stay above the scripted driver's 73 steps.
 TEST(KnownGapContinuousActionsLearning, TheCarBeatsTheScriptedDriver) {
     const Window continuous = lateAtDefaults("steering-car", kRuns, kTrials, kFirst);
     const double scripted = scriptedSteps();
@@ -76,14 +77,21 @@ int pendulumSolved(std::uint64_t seeds, std::uint64_t budget, std::uint32_t reso
 
 }  // namespace
 
-// The mechanism, with the one setting the discrete Pendulum-v1 needs too (docs/experiments.md):
-// Gymnasium's continuous torque swung up and held within the Zoo's PPO budget (100k steps).
-TEST(ContinuousActionsLearning, PendulumWithContinuousTorqueAtResolution16) {
-    // Measured: 12 of 16 seeds (the others spin, -1300 to -1440); 10 of seeds 1-12.
-    EXPECT_GE(pendulumSolved(12, 100000, 16), 9);
+// Gymnasium's continuous torque swung up and held at the defaults on every seed within three times
+// the Zoo's PPO budget. Before the horizon followed the rewards: 2 of 10 (its 10 s trials had set a
+// 15 s horizon for a reward that says on every step how high the pendulum is).
+TEST(ContinuousActionsLearning, PendulumWithContinuousTorqueAtDefaultsOnEverySeed) {
+    // Measured: 10 of 10, median 142k steps.
+    EXPECT_EQ(pendulumSolved(10, 300000, 0), 10);
 }
 
-// Known gap (not gating): at the defaults (resolution 10) 2 of 10 seeds in 300k steps.
-TEST(KnownGapContinuousActionsLearning, PendulumWithContinuousTorqueAtDefaultsOnEverySeed) {
+// With the setting the discrete torque was documented with: within the Zoo's 100k steps.
+TEST(ContinuousActionsLearning, PendulumWithContinuousTorqueAtResolution16) {
+    // Measured: 11 of 12 (12 of 16 before the horizon followed the rewards).
+    EXPECT_GE(pendulumSolved(12, 100000, 16), 10);
+}
+
+// Known gap (not gating): at the defaults, 3 of 10 seeds within the Zoo's 100k steps.
+TEST(KnownGapContinuousActionsLearning, PendulumWithContinuousTorqueAtDefaultsWithinTheZooBudget) {
     EXPECT_EQ(pendulumSolved(10, 100000, 0), 10);
 }
