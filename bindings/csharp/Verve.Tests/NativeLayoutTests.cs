@@ -76,6 +76,7 @@ namespace Verve.Tests
             Assert.Equal((long)Adaptation.All, c["const VERVE_ADAPT_ALL"]);
             Assert.Equal(AgentOptions.MaxSensorGroups, c["const VERVE_MAX_SENSOR_GROUPS"]);
             Assert.Equal(AgentOptions.MaxActionBranches, c["const VERVE_MAX_ACTION_BRANCHES"]);
+            Assert.Equal(AgentOptions.MaxContinuousActions, c["const VERVE_MAX_CONTINUOUS_ACTIONS"]);
             Assert.Equal((long)SensorGrouping.Auto, c["const VERVE_GROUPING_AUTO"]);
             Assert.Equal((long)SensorGrouping.Joint, c["const VERVE_GROUPING_JOINT"]);
             Assert.Equal((long)SensorGrouping.Custom, c["const VERVE_GROUPING_CUSTOM"]);
@@ -85,8 +86,9 @@ namespace Verve.Tests
         [Fact]
         public unsafe void BindingUsesTheCurrentDescriptorVersion()
         {
-            Assert.Equal(Probe.Value["const VERVE_AGENT_DESC_SIZE_V6"], sizeof(verve_agent_desc));
-            // V5 ended where the V6 fields begin, V4 where the V5 fields begin.
+            Assert.Equal(Probe.Value["const VERVE_AGENT_DESC_SIZE_V7"], sizeof(verve_agent_desc));
+            // V6 ended where the V7 field begins, V5 where the V6 fields begin, V4 where the V5 fields begin.
+            Assert.Equal(Probe.Value["const VERVE_AGENT_DESC_SIZE_V6"], (long)Marshal.OffsetOf<verve_agent_desc>("num_continuous_actions"));
             Assert.Equal(Probe.Value["const VERVE_AGENT_DESC_SIZE_V5"], (long)Marshal.OffsetOf<verve_agent_desc>("num_action_branches"));
             Assert.Equal(Probe.Value["const VERVE_AGENT_DESC_SIZE_V4"], (long)Marshal.OffsetOf<verve_agent_desc>("sensor_grouping"));
         }

@@ -40,6 +40,7 @@ int main(void) {
     FIELD(verve_agent_desc, sensor_groups);
     FIELD(verve_agent_desc, num_action_branches);
     FIELD(verve_agent_desc, action_branches);
+    FIELD(verve_agent_desc, num_continuous_actions);
 
     SIZE(verve_agent_stats);
     FIELD(verve_agent_stats, struct_size);
@@ -81,7 +82,9 @@ int main(void) {
     printf("const VERVE_AGENT_DESC_SIZE_V4 %u\n", (unsigned)VERVE_AGENT_DESC_SIZE_V4);
     printf("const VERVE_AGENT_DESC_SIZE_V5 %u\n", (unsigned)VERVE_AGENT_DESC_SIZE_V5);
     printf("const VERVE_AGENT_DESC_SIZE_V6 %u\n", (unsigned)VERVE_AGENT_DESC_SIZE_V6);
+    printf("const VERVE_AGENT_DESC_SIZE_V7 %u\n", (unsigned)VERVE_AGENT_DESC_SIZE_V7);
     printf("const VERVE_MAX_ACTION_BRANCHES %d\n", VERVE_MAX_ACTION_BRANCHES);
+    printf("const VERVE_MAX_CONTINUOUS_ACTIONS %d\n", VERVE_MAX_CONTINUOUS_ACTIONS);
     printf("const VERVE_MAX_SENSOR_GROUPS %d\n", VERVE_MAX_SENSOR_GROUPS);
     printf("const VERVE_GROUPING_AUTO %d\n", VERVE_GROUPING_AUTO);
     printf("const VERVE_GROUPING_JOINT %d\n", VERVE_GROUPING_JOINT);

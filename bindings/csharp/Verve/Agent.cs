@@ -39,7 +39,8 @@ namespace Verve
 
         /// <summary>One step: learn from <paramref name="reward"/> (earned by the previous action, clamped
         /// to [-1, 1]) and the new observation, and choose the next action. Null arrays mean no sensors of that kind.</summary>
-        /// <returns>The action to take, in [0, <see cref="AgentOptions.Actions"/>).</returns>
+        /// <returns>The action to take, in [0, <see cref="AgentOptions.Actions"/>); continuous actions, if any, are then
+        /// read with <see cref="GetContinuousAction(Span{float})"/>.</returns>
         public int Update(float reward, int[]? discrete, float[]? continuous, float dt) =>
             Update(reward, new ReadOnlySpan<int>(discrete), new ReadOnlySpan<float>(continuous), dt);
 
@@ -88,7 +89,8 @@ namespace Verve
 
         /// <summary>A demonstrated step (docs/teaching.md): as <see cref="Update(float, ReadOnlySpan{int}, ReadOnlySpan{float}, float)"/>,
         /// but the host took <paramref name="action"/> (a player or a scripted AI drove the NPC). The agent learns from it as
-        /// from its own choice and is pulled towards it; the next <c>Update</c> acts on its own again.</summary>
+        /// from its own choice and is pulled towards it; the next <c>Update</c> acts on its own again. A demonstration names
+        /// the discrete action only: the continuous actions of that step are the policy's mean.</summary>
         /// <param name="reward">What the previous action earned.</param>
         /// <param name="discrete">One value per discrete sensor, each in [0, its value count).</param>
         /// <param name="continuous">One value per continuous sensor, in [-1, 1].</param>
@@ -173,6 +175,41 @@ namespace Verve
                         (uint)probabilities.Length));
                 }
                 return probabilities;
+            }
+        }
+
+        /// <summary>The continuous actions chosen at the latest update (<see cref="AgentOptions.ContinuousActions"/>
+        /// values, each in [-1, 1]: drawn around the policy's mean, or the mean itself with
+        /// <see cref="ActionSelection.Greedy"/> and on a demonstrated step); 0s before any update. A new array on
+        /// every read: in a game loop use <see cref="GetContinuousAction(Span{float})"/>.</summary>
+        public unsafe float[] ContinuousAction
+        {
+            get
+            {
+                AgentHandle handle = Handle;
+                var desc = new verve_agent_desc { struct_size = (uint)sizeof(verve_agent_desc) };
+                VerveException.ThrowIfFailed(NativeMethods.verve_agent_get_desc(handle, &desc));
+                if (desc.num_continuous_actions == 0) return Array.Empty<float>();
+                var values = new float[Math.Min(desc.num_continuous_actions, (ulong)AgentOptions.MaxContinuousActions)];
+                GetContinuousAction(values);
+                return values;
+            }
+        }
+
+        /// <summary>As <see cref="ContinuousAction"/>, without allocation: writes the latest update's continuous actions
+        /// into <paramref name="destination"/>, which must hold exactly <see cref="AgentOptions.ContinuousActions"/> floats
+        /// (e.g. <c>stackalloc float[2]</c>, or an array kept per agent).</summary>
+        /// <exception cref="VerveException"><paramref name="destination"/> is not the agent's number of continuous actions long.</exception>
+        public unsafe void GetContinuousAction(Span<float> destination)
+        {
+            AgentHandle handle = Handle;
+            float none;
+            fixed (float* d = &MemoryMarshal.GetReference(destination))
+            {
+                // An empty span pins to null, which the library refuses even when the agent has no continuous
+                // actions: point it at a dummy so the count alone decides.
+                VerveException.ThrowIfFailed(NativeMethods.verve_agent_get_continuous_action(handle,
+                    destination.IsEmpty ? &none : d, (uint)destination.Length));
             }
         }
 

@@ -22,6 +22,8 @@ namespace Verve
         public const int MaxSensorGroups = verve_agent_desc.MaxSensorGroups;
         /// <summary>Most action branches an agent can have.</summary>
         public const int MaxActionBranches = verve_agent_desc.MaxActionBranches;
+        /// <summary>Most continuous actions an agent can have.</summary>
+        public const int MaxContinuousActions = verve_agent_desc.MaxContinuousActions;
 
         private readonly List<int> _discreteSensors = new List<int>();
         private readonly List<bool> _continuousCircular = new List<bool>();
@@ -30,6 +32,7 @@ namespace Verve
         private int _actions;
         private int _resolution;
         private int _maxPlanningSteps;
+        private int _continuousActions;
 
         /// <summary>Options with the library's defaults (<c>verve_agent_desc_init</c>) and no sensors.</summary>
         public AgentOptions() : this(DefaultDescriptor()) { }
@@ -69,6 +72,7 @@ namespace Verve
             PolicyWeightBound = d.policy_weight_bound;
             Adaptation = (Adaptation)d.adaptation;
             Grouping = (SensorGrouping)d.sensor_grouping;
+            _continuousActions = (int)Math.Min(d.num_continuous_actions, (ulong)MaxContinuousActions);
         }
 
         /// <summary>Value count of each discrete sensor, in observation order.</summary>
@@ -79,8 +83,22 @@ namespace Verve
 
         /// <summary>Number of actions the agent chooses from. With <see cref="ActionBranches"/>, the number of
         /// combined actions: <see cref="SetActionBranches(int[])"/> sets it to their product, and any other
-        /// value is refused when the agent is created.</summary>
+        /// value is refused when the agent is created. With <see cref="ContinuousActions"/> and no branches, 0 means 1.</summary>
         public int Actions { get => _actions; set => _actions = NonNegative(value, nameof(Actions)); }
+
+        /// <summary>How many continuous actions (values in [-1, 1]: steering, throttle, a torque) the agent
+        /// chooses on every step beside its discrete action, read after each update with
+        /// <see cref="Agent.ContinuousAction"/> or <see cref="Agent.GetContinuousAction(Span{float})"/>
+        /// (default 0: none). With continuous actions and no <see cref="ActionBranches"/>, <see cref="Actions"/>
+        /// 0 means 1: an agent that only steers keeps one trivial discrete action. Not with planning.</summary>
+        /// <exception cref="ArgumentOutOfRangeException">Below 0 or above <see cref="MaxContinuousActions"/>.</exception>
+        public int ContinuousActions
+        {
+            get => _continuousActions;
+            set => _continuousActions = value >= 0 && value <= MaxContinuousActions ? value
+                : throw new ArgumentOutOfRangeException(nameof(ContinuousActions), value,
+                    $"an agent has 0 to {MaxContinuousActions} continuous actions");
+        }
 
         /// <summary>RBFs across [-1, 1] per continuous sensor (RBF width 2 / resolution).</summary>
         public int Resolution { get => _resolution; set => _resolution = NonNegative(value, nameof(Resolution)); }
@@ -300,6 +318,7 @@ namespace Verve
             for (int i = 0; i < _sensorGroups.Count; i++) d.sensor_groups[i] = MaskOf(_sensorGroups[i]);
             d.num_action_branches = (uint)_actionBranches.Count; // SetActionBranches keeps it <= MaxActionBranches
             for (int i = 0; i < _actionBranches.Count; i++) d.action_branches[i] = (uint)_actionBranches[i];
+            d.num_continuous_actions = (ulong)_continuousActions;
             return d;
         }
 

@@ -42,7 +42,8 @@ namespace Verve
         /// <summary>One step of every agent: agent i earned <c>rewards[i]</c>, and its sensor values are the
         /// next ones in <paramref name="discrete"/> and <paramref name="continuous"/> (agents packed one after
         /// another). Writes agent i's action to <c>actions[i]</c>, and, when <paramref name="results"/> is not
-        /// empty, each agent's verdict to <c>results[i]</c>.</summary>
+        /// empty, each agent's verdict to <c>results[i]</c>. Agents with continuous actions: read each one's afterwards
+        /// with <see cref="Agent.GetContinuousAction(Span{float})"/>.</summary>
         /// <exception cref="VerveException">Any bad input (the message names the first bad agent): then no
         /// agent changed and no action was written.</exception>
         public unsafe void Update(Agent[] agents, ReadOnlySpan<float> rewards, ReadOnlySpan<int> discrete,

@@ -188,6 +188,35 @@ static class MonoHost
             Require(options.ActionBranches.Count == 0, "ClearActionBranches left branches");
         });
 
+        // Continuous actions: an agent that only steers (Actions 0 means 1), the values read both ways, greedy = mean.
+        Check("AgentOptions.get_ContinuousActions(); AgentOptions.set_ContinuousActions(Int32); " +
+              "Agent.get_ContinuousAction(); Agent.GetContinuousAction(Span<Single>)", () =>
+        {
+            var options = new AgentOptions { Actions = 0, ContinuousActions = 2, Seed = 4 }.AddContinuousSensor();
+            Require(new AgentOptions().ContinuousActions == 0 && options.ContinuousActions == 2, "ContinuousActions not recorded");
+            Expect<ArgumentOutOfRangeException>(() => options.ContinuousActions = AgentOptions.MaxContinuousActions + 1);
+            using (var agent = new Agent(options))
+            {
+                Require(agent.Options.Actions == 1 && agent.Options.ContinuousActions == 2, "the steering agent's actions did not come back");
+                Require(agent.ContinuousAction.SequenceEqual(new[] { 0f, 0f }), "continuous actions before any update are not 0");
+                var values = new float[2];
+                for (int step = 0; step < 50; step++)
+                {
+                    Require(agent.Update(0.1f, new int[0], new[] { (float)Math.Sin(step) }, 0.1f) == 0, "the one discrete action is not 0");
+                    agent.GetContinuousAction(values);
+                    Require(values[0] >= -1f && values[0] <= 1f && values[1] >= -1f && values[1] <= 1f, "a continuous action outside [-1, 1]");
+                    Require(agent.ContinuousAction.SequenceEqual(values), "the two read-outs disagree");
+                }
+                agent.ActionSelection = ActionSelection.Greedy;
+                agent.Learning = false;
+                agent.Update(0f, new int[0], new[] { 0.5f }, 0.1f);
+                float[] mean = agent.ContinuousAction;
+                agent.Update(0f, new int[0], new[] { 0.5f }, 0.1f);
+                Require(agent.ContinuousAction.SequenceEqual(mean), "greedy gave other values for the same observation");
+                Expect<VerveException>(() => agent.GetContinuousAction(new float[3]));
+            }
+        });
+
         // Sensor groups: Auto's lattices for 12 sensors (Full allocation shows them), custom groups there and back.
         Check("AgentOptions.get_Grouping(); AgentOptions.set_Grouping(SensorGrouping); AgentOptions.AddSensorGroup(Int32[]); " +
               "AgentOptions.get_SensorGroups(); AgentOptions.ClearSensorGroups()", () =>

@@ -108,6 +108,10 @@ namespace Verve.Native
             uint count);
 
         [DllImport(Library, CallingConvention = CallingConvention.Cdecl)]
+        internal static extern ResultCode verve_agent_get_continuous_action(AgentHandle agent, float* values,
+            uint count);
+
+        [DllImport(Library, CallingConvention = CallingConvention.Cdecl)]
         internal static extern ResultCode verve_agent_split_action(AgentHandle agent, uint action, uint* choices,
             uint branches);
 

@@ -15,6 +15,7 @@ namespace Verve.Native
         public const int MaxContinuousSensors = 16; // VERVE_MAX_CONTINUOUS_SENSORS
         public const int MaxSensorGroups = 64;      // VERVE_MAX_SENSOR_GROUPS
         public const int MaxActionBranches = 8;     // VERVE_MAX_ACTION_BRANCHES
+        public const int MaxContinuousActions = 8;  // VERVE_MAX_CONTINUOUS_ACTIONS
 
         public uint struct_size;
         public uint num_discrete_sensors;
@@ -49,6 +50,7 @@ namespace Verve.Native
         public fixed ulong sensor_groups[MaxSensorGroups]; // bit i: continuous sensor i
         public uint num_action_branches; // V6
         public fixed uint action_branches[MaxActionBranches]; // choices per branch
+        public ulong num_continuous_actions; // V7: 64 bits so it starts where V6 ended (V6's tail padding)
     }
 
     [StructLayout(LayoutKind.Sequential)]
