@@ -35,7 +35,8 @@ if(NOT VERVE_BUILD_TESTS OR NOT CMAKE_CROSSCOMPILING_EMULATOR)
 endif()
 # The same scripts as on Linux (CMakeLists.txt beside this file), with luajit.exe under Wine; the
 # folder holding the module is the working directory: Lua's default cpath starts with .\?.dll.
-set(VERVE_LUA_TESTS module descriptor agent errors close persistence learning policy crowd warnings sensor_groups action_branches)
+set(VERVE_LUA_TESTS module descriptor agent errors close persistence learning policy crowd warnings sensor_groups action_branches
+  continuous_actions)
 set(paths "package.path=[[${CMAKE_CURRENT_SOURCE_DIR}/tests/?.lua;${PROJECT_SOURCE_DIR}/samples/lua/?.lua]]")
 foreach(name IN LISTS VERVE_LUA_TESTS)
   add_test(NAME lua.jit.${name} COMMAND ${CMAKE_CROSSCOMPILING_EMULATOR} ${VERVE_LUA_OUTPUT_DIR}/luajit.exe

@@ -1,4 +1,5 @@
-/* lua_actions.c - action branches: the descriptor field and split/join of combined actions.
+/* lua_actions.c - actions beyond one discrete set: action branches (the descriptor field and
+ * split/join of combined actions) and continuous actions (the descriptor field and their values).
  * Actions and choices are 1-based here, as every action in this module; 0-based at the C ABI. */
 #include <stdint.h>
 
@@ -29,8 +30,21 @@ void lv_read_action_branches(lua_State* L, verve_agent_desc* d) {
     d->num_action_branches = n;
 }
 
-void lv_finish_action_branches(verve_agent_desc* d, int actions_given) {
-    if (d->num_action_branches > 0 && !actions_given) d->num_actions = 0;
+void lv_read_continuous_actions(lua_State* L, verve_agent_desc* d) {
+    uint32_t n = 0;
+    if (!lv_get_u32(L, -1, &n))
+        luaL_error(L, "verve: agent: descriptor field 'continuous_actions' must be a count of values like 2, 0 to %d (got %s)",
+                   VERVE_MAX_CONTINUOUS_ACTIONS,
+                   lua_type(L, -1) == LUA_TNUMBER ? lua_tostring(L, -1) : luaL_typename(L, -1));
+    if (n > VERVE_MAX_CONTINUOUS_ACTIONS)
+        luaL_error(L, "verve: agent: %d continuous_actions; at most %d", (int)n, VERVE_MAX_CONTINUOUS_ACTIONS);
+    d->num_continuous_actions = n;
+}
+
+void lv_finish_actions(verve_agent_desc* d, int actions_given) {
+    /* The library's 0: the branches' product, or with continuous actions alone the one discrete
+     * action they keep (the default 2 would make a steering agent also pick between two). */
+    if ((d->num_action_branches > 0 || d->num_continuous_actions > 0) && !actions_given) d->num_actions = 0;
 }
 
 void lv_push_action_branches(lua_State* L, const verve_agent_desc* d) {
@@ -88,5 +102,33 @@ int lv_join_action(lua_State* L) {
     r = verve_agent_join_action(lv_open_agent(L), choices, n, &action);
     if (r != VERVE_OK) return lv_fail_indexed(L, "join_action", r);
     lua_pushinteger(L, (lua_Integer)action + 1);
+    return 1;
+}
+
+int lv_continuous_action(lua_State* L) {
+    float values[VERVE_MAX_CONTINUOUS_ACTIONS];
+    verve_agent_desc d;
+    verve_agent* a;
+    uint32_t n = 0, i;
+    verve_result r;
+    luaL_checkudata(L, 1, LV_AGENT_MT);
+    if (!lua_isnoneornil(L, 2)) luaL_checktype(L, 2, LUA_TTABLE);
+    a = lv_open_agent(L);
+    verve_agent_desc_default(&d);
+    r = verve_agent_get_desc(a, &d); /* the count the library wants: num_continuous_actions */
+    if (r == VERVE_OK) {
+        n = d.num_continuous_actions > VERVE_MAX_CONTINUOUS_ACTIONS ? VERVE_MAX_CONTINUOUS_ACTIONS
+                                                                    : (uint32_t)d.num_continuous_actions;
+        r = verve_agent_get_continuous_action(a, values, n);
+    }
+    if (r != VERVE_OK) return lv_fail(L, "continuous_action", r);
+    /* The caller's table when given: a game loop reading every frame allocates nothing. Raw sets,
+     * so no metamethod (no Lua code) runs. */
+    if (lua_istable(L, 2)) lua_settop(L, 2);
+    else lua_createtable(L, (int)n, 0);
+    for (i = 0; i < n; ++i) {
+        lua_pushnumber(L, (lua_Number)values[i]);
+        lua_rawseti(L, -2, (int)i + 1);
+    }
     return 1;
 }

@@ -348,6 +348,8 @@ static void lv_read_desc(lua_State* L, int idx, verve_agent_desc* d) {
             lv_read_sensor_groups(L, d);
         } else if (strcmp(key, "action_branches") == 0) {
             lv_read_action_branches(L, d);
+        } else if (strcmp(key, "continuous_actions") == 0) {
+            lv_read_continuous_actions(L, d);
         } else {
             while (i < LV_FIELD_COUNT && strcmp(lv_fields[i].name, key) != 0) ++i;
             if (i == LV_FIELD_COUNT) luaL_error(L, "verve: agent: unknown descriptor field '%s'", key);
@@ -358,13 +360,13 @@ static void lv_read_desc(lua_State* L, int idx, verve_agent_desc* d) {
         lua_pop(L, 1);
     }
     lv_check_sensor_groups(L, d, grouping_given);
-    lv_finish_action_branches(d, actions_given);
+    lv_finish_actions(d, actions_given);
 }
 
 static void lv_push_desc(lua_State* L, const verve_agent_desc* d) {
     uint32_t i;
     size_t f;
-    lua_createtable(L, 0, (int)LV_FIELD_COUNT + 4);
+    lua_createtable(L, 0, (int)LV_FIELD_COUNT + 5);
     lua_createtable(L, (int)d->num_discrete_sensors, 0);
     for (i = 0; i < d->num_discrete_sensors && i < VERVE_MAX_DISCRETE_SENSORS; ++i) {
         lua_pushinteger(L, (lua_Integer)d->discrete_sensor_values[i]);
@@ -393,6 +395,8 @@ static void lv_push_desc(lua_State* L, const verve_agent_desc* d) {
     lua_setfield(L, -2, "sensor_groups");
     lv_push_action_branches(L, d);
     lua_setfield(L, -2, "action_branches");
+    lua_pushinteger(L, (lua_Integer)d->num_continuous_actions);
+    lua_setfield(L, -2, "continuous_actions");
     for (f = 0; f < LV_FIELD_COUNT; ++f) {
         lv_push_field(L, &lv_fields[f], d);
         lua_setfield(L, -2, lv_fields[f].name);
@@ -842,9 +846,12 @@ static int lv_tostring(lua_State* L) {
     if (!ud->handle) {
         lua_pushfstring(L, "verve.agent (closed): %p", (void*)ud);
     } else if (verve_agent_get_desc(ud->handle, &d) == VERVE_OK) {
-        lua_pushfstring(L, "verve.agent (%d discrete, %d continuous sensors, %d actions): %p",
-                        (int)d.num_discrete_sensors, (int)d.num_continuous_sensors, (int)d.num_actions,
-                        (void*)ud);
+        lua_pushfstring(L, "verve.agent (%d discrete, %d continuous sensors, %d actions",
+                        (int)d.num_discrete_sensors, (int)d.num_continuous_sensors, (int)d.num_actions);
+        if (d.num_continuous_actions > 0) lua_pushfstring(L, ", %d continuous actions", (int)d.num_continuous_actions);
+        else lua_pushliteral(L, "");
+        lua_pushfstring(L, "): %p", (void*)ud);
+        lua_concat(L, 3);
     } else {
         lua_pushfstring(L, "verve.agent: %p", (void*)ud);
     }
@@ -1117,6 +1124,7 @@ static const luaL_Reg lv_agent_methods[] = {
     {"action_probabilities", lv_action_probabilities},
     {"split_action", lv_split_action},
     {"join_action", lv_join_action},
+    {"continuous_action", lv_continuous_action},
     {"reset_short_term_memory", lv_reset_short_term_memory},
     {"set_learning", lv_set_learning},
     {"learning", lv_learning},
