@@ -80,6 +80,13 @@ export interface AgentDescriptor {
    * Planning needs one action set. Read back: [] without branches.
    */
   actionBranches?: number[];
+  /**
+   * Continuous actions: this many values in [-1, 1] (0 .. 8, default 0) chosen on every update
+   * beside the discrete action, e.g. 2 for steering and throttle; read with
+   * Agent.continuousAction(). Without branches `actions` may be left out: it becomes 1 (an agent
+   * that only steers keeps one trivial discrete action). Not with planning.
+   */
+  continuousActions?: number;
 }
 
 /** A descriptor as read back: every field present, continuous as a list. */
@@ -123,6 +130,8 @@ export class Agent {
   readonly actionBranches: readonly number[];
   /** Flags in a mask, values in actionProbabilities(): numActions, or the branches' sizes summed. */
   readonly numChoices: number;
+  /** Values continuousAction() returns (descriptor.continuousActions; 0 without). */
+  readonly numContinuousActions: number;
   readonly numDiscrete: number;
   readonly numContinuous: number;
   readonly disposed: boolean;
@@ -147,6 +156,12 @@ export class Agent {
   actionSelection(): 'sample' | 'greedy';
   /** Each action's probability; with action branches, each branch's choices in turn, each branch summing to 1. */
   actionProbabilities(out?: Float32Array): Float32Array;
+  /**
+   * The latest update's continuous actions, numContinuousActions values in [-1, 1]: drawn around the
+   * policy's mean, or the mean when greedy; 0s before the first update. Into `out` when given (at
+   * least numContinuousActions long; returned): no allocation, for every frame.
+   */
+  continuousAction(out?: Float32Array): Float32Array;
   /** The choice of each action branch (from 0) within a combined action; [action] without branches. */
   splitAction(action: number): number[];
   /** The combined action of one choice per branch (each from 0, branch 0 varying fastest). */

@@ -5,11 +5,13 @@
 // trials 1-20. Then the JS API in the page: the fixed-seed runs of bindings/web/test/fixed_runs.js
 // give the same actions in Chromium as in Node.js, and as the native library when
 // VERVE_NATIVE_PROGRAM names bindings/web/test/native/hot_plate_actions (scripts/test_web.sh does);
-// a bad input is a VerveError there too.
+// the continuous actions of a fixed-seed 1-D reach (bindings/web/test/reach.js) are bit for bit
+// Node.js's; a bad input is a VerveError there too.
 import { execFileSync } from 'node:child_process';
 import { chromium } from 'playwright-core';
 import { loadVerve } from '../../bindings/web/src/index.js';
 import { fixedRuns } from '../../bindings/web/test/fixed_runs.js';
+import { reachRun } from '../../bindings/web/test/reach.js';
 import { serve } from './serve.mjs';
 
 const screenshot = process.argv[2] ?? 'web-cart-pole.png';
@@ -49,6 +51,7 @@ try {
   const browserRuns = await page.evaluate(async () => {
     const { loadVerve: load } = await import('/bindings/web/src/index.js');
     const { fixedRuns: runs } = await import('/bindings/web/test/fixed_runs.js');
+    const { reachRun: reach } = await import('/bindings/web/test/reach.js');
     const verve = await load();
     let refusal = '';
     try {
@@ -56,9 +59,14 @@ try {
     } catch (e) {
       refusal = `${e.name} ${e.code}`;
     }
-    return { lines: runs(verve), refusal };
+    return { lines: runs(verve), refusal, reach: reach(verve) };
   });
   if (browserRuns.refusal !== 'VerveError VERVE_ERROR_INVALID_ARGUMENT') fail(`a NaN reward in the page gave '${browserRuns.refusal}'`);
+  // Continuous actions: the same wasm in both engines; compared with Node.js only, since the
+  // native library's tanh and exp are glibc's, not the wasm build's.
+  const nodeReach = reachRun(await loadVerve());
+  if (browserRuns.reach !== nodeReach) fail("the 1-D reach's continuous actions in Chromium differ from Node.js's");
+  else console.log(`page: ${nodeReach.length / 8} continuous actions of a 1-D reach in Chromium, the same bits as Node.js`);
   const references = [['Node.js', fixedRuns(await loadVerve())]];
   if (process.env.VERVE_NATIVE_PROGRAM) {
     references.push(['the native library', execFileSync(process.env.VERVE_NATIVE_PROGRAM, { encoding: 'utf8' }).trim().split('\n')]);

@@ -241,6 +241,22 @@ godot_variant vg_save_to_bytes(vg_call* c, vg_save_memory_fn save, const void* o
     return out;
 }
 
+float* vg_reals_open(godot_pool_real_array* values, godot_pool_real_array_write_access** write, uint32_t n) {
+    vg_core->godot_pool_real_array_new(values);
+    vg_core->godot_pool_real_array_resize(values, (godot_int)n);
+    *write = vg_core->godot_pool_real_array_write(values);
+    return vg_core->godot_pool_real_array_write_access_ptr(*write);
+}
+
+godot_variant vg_reals_close(godot_pool_real_array* values, godot_pool_real_array_write_access* write, int ok) {
+    godot_variant out;
+    vg_core->godot_pool_real_array_write_access_destroy(write);
+    if (ok) vg_core->godot_variant_new_pool_real_array(&out, values);
+    else out = vg_variant_nil();
+    vg_core->godot_pool_real_array_destroy(values);
+    return out;
+}
+
 int vg_string_is(const godot_variant* v, const char* text) {
     godot_char_string s;
     int same;

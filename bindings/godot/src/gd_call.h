@@ -79,6 +79,10 @@ int vg_with_bytes(vg_call* c, int i, vg_bytes_fn use, void* context);
  * variant, by the two-call pattern; null after reporting an error. */
 typedef verve_result (*vg_save_memory_fn)(const void* object, void* buffer, size_t* size);
 godot_variant vg_save_to_bytes(vg_call* c, vg_save_memory_fn save, const void* object);
+/* A PoolRealArray of n floats for a C call to fill: open it, let the call write through the
+ * pointer, then close it into a variant (nil when the call failed). */
+float* vg_reals_open(godot_pool_real_array* values, godot_pool_real_array_write_access** write, uint32_t n);
+godot_variant vg_reals_close(godot_pool_real_array* values, godot_pool_real_array_write_access* write, int ok);
 
 /* Finds each of `count` names in dict: values[i] is its value, NULL when absent (valid while dict
  * lives). The names are the first member (const char*) of `count` table entries `stride` bytes

@@ -6,7 +6,7 @@
 
 typedef enum vg_kind {
     VG_UINT, VG_FLOAT, VG_UINT64, VG_BOOL, VG_ENUM, VG_DISCRETE_SENSORS, VG_CIRCULAR, VG_SENSOR_GROUPS,
-    VG_ACTION_BRANCHES
+    VG_ACTION_BRANCHES, VG_CONTINUOUS_ACTIONS
 } vg_kind;
 
 typedef struct vg_option {
@@ -49,6 +49,7 @@ static const vg_option vg_options[] = {
     VG_OPTION("grouping", sensor_grouping, VG_ENUM, vg_grouping_names),
     VG_OPTION("sensor_groups", sensor_groups, VG_SENSOR_GROUPS, NULL),
     VG_OPTION("action_branches", action_branches, VG_ACTION_BRANCHES, NULL),
+    VG_OPTION("continuous_actions", num_continuous_actions, VG_CONTINUOUS_ACTIONS, NULL),
 };
 
 #define VG_OPTION_COUNT (sizeof vg_options / sizeof vg_options[0])
@@ -181,6 +182,20 @@ static int vg_read_action_branches(vg_call* c, const vg_option* o, const godot_v
     return 1;
 }
 
+/* continuous_actions: how many values in [-1, 1] the agent chooses beside its discrete action.
+ * The range is checked here so that the error names this option, not the C field. */
+static int vg_read_continuous_actions(vg_call* c, const vg_option* o, const godot_variant* v, verve_agent_desc* d) {
+    char expected[32];
+    int64_t n;
+    snprintf(expected, sizeof expected, "an int from 0 to %d", VERVE_MAX_CONTINUOUS_ACTIONS);
+    if (vg_core->godot_variant_get_type(v) != GODOT_VARIANT_TYPE_INT) return vg_option_error(c, o, expected, v);
+    n = vg_core->godot_variant_as_int(v);
+    if (n < 0 || n > VERVE_MAX_CONTINUOUS_ACTIONS)
+        return vg_fail(c, "option '%s' must be %s (got %lld)", o->name, expected, (long long)n);
+    d->num_continuous_actions = (uint64_t)n;
+    return 1;
+}
+
 static int vg_read_enum(vg_call* c, const vg_option* o, const godot_variant* v, uint32_t* out) {
     char expected[128] = "one of";
     uint32_t i = 0;
@@ -225,6 +240,7 @@ static int vg_read_option(vg_call* c, const vg_option* o, const godot_variant* v
     case VG_CIRCULAR: return vg_read_circular(c, o, v, d);
     case VG_SENSOR_GROUPS: return vg_read_sensor_groups(c, o, v, d);
     case VG_ACTION_BRANCHES: return vg_read_action_branches(c, o, v, d);
+    case VG_CONTINUOUS_ACTIONS: return vg_read_continuous_actions(c, o, v, d);
     }
     return 0;
 }
@@ -247,6 +263,11 @@ int vg_options_read(vg_call* c, int i, verve_agent_desc* d) {
     /* Branches without 'actions': num_actions 0, which the library sets to their product. */
     for (k = 0; k < VG_OPTION_COUNT && vg_options[k].offset != offsetof(verve_agent_desc, num_actions); ++k) {}
     if (ok && d->num_action_branches > 0 && (k == VG_OPTION_COUNT || values[k] == NULL)) d->num_actions = 0;
+    /* Continuous actions without branches or 'actions': num_actions 0, which the library makes the
+     * one trivial discrete action of an agent that only steers (not the default 2). */
+    if (ok && d->num_continuous_actions > 0 && d->num_action_branches == 0 &&
+        (k == VG_OPTION_COUNT || values[k] == NULL))
+        d->num_actions = 0;
     vg_core->godot_dictionary_destroy(&dict);
     return ok;
 }
@@ -258,7 +279,8 @@ static godot_variant vg_option_variant(const vg_option* o, const verve_agent_des
     uint32_t i, n;
     switch (o->kind) {
     case VG_UINT: return vg_variant_int(*(const uint32_t*)p);
-    case VG_UINT64: return vg_variant_int((int64_t)*(const uint64_t*)p);
+    case VG_UINT64:
+    case VG_CONTINUOUS_ACTIONS: return vg_variant_int((int64_t)*(const uint64_t*)p);
     case VG_FLOAT: return vg_variant_real(*(const float*)p);
     case VG_BOOL: return vg_variant_bool(*(const uint32_t*)p != 0);
     case VG_ENUM: {

@@ -1,7 +1,8 @@
-/* verve_action_methods.c - action branches on a VerveAgent: split_action(action) -> Array of one
- * choice per branch, join_action(choices) -> the combined action. Actions and choices count from 0,
- * as every action of this plugin; branch 0 varies fastest. A failure prints a Godot error and
- * returns null or -1. */
+/* verve_action_methods.c - action branches and continuous actions on a VerveAgent:
+ * split_action(action) -> Array of one choice per branch, join_action(choices) -> the combined
+ * action, continuous_action() -> the latest update's continuous values. Actions and choices count
+ * from 0, as every action of this plugin; branch 0 varies fastest. A failure prints a Godot error
+ * and returns null or -1. */
 #include "verve_agent_methods.h"
 
 #define VG_METHOD(name) \
@@ -64,4 +65,24 @@ VG_METHOD(join_action) {
     }
     if (!vg_check(&c, verve_agent_join_action(a, choices, n, &action))) return vg_variant_int(-1);
     return vg_variant_int(action);
+}
+
+VG_METHOD(continuous_action) {
+    vg_call c;
+    verve_agent* a;
+    verve_agent_desc d;
+    godot_pool_real_array values;
+    godot_pool_real_array_write_access* write;
+    float* out;
+    float none = 0.0f;
+    uint32_t n;
+    VG_UNUSED;
+    verve_agent_desc_default(&d);
+    if (!vg_begin(&c, user_data, "continuous_action", argc, argv, 0, 0) || !vg_agent_handle(&c, &a) ||
+        !vg_check(&c, verve_agent_get_desc(a, &d)))
+        return vg_variant_nil();
+    n = d.num_continuous_actions <= VERVE_MAX_CONTINUOUS_ACTIONS ? (uint32_t)d.num_continuous_actions : 0;
+    out = vg_reals_open(&values, &write, n);
+    /* An empty PoolRealArray has no buffer; the library wants a pointer even for 0 values. */
+    return vg_reals_close(&values, write, vg_check(&c, verve_agent_get_continuous_action(a, n ? out : &none, n)));
 }

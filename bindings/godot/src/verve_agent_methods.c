@@ -245,24 +245,6 @@ VG_METHOD(get_rbf_count) {
     return vg_variant_int(n);
 }
 
-/* A PoolRealArray of n floats for a C call to fill: open it, let the call write through the
- * pointer, then close it into a variant (nil when the call failed). */
-static float* vg_reals_open(godot_pool_real_array* values, godot_pool_real_array_write_access** write, uint32_t n) {
-    vg_core->godot_pool_real_array_new(values);
-    vg_core->godot_pool_real_array_resize(values, (godot_int)n);
-    *write = vg_core->godot_pool_real_array_write(values);
-    return vg_core->godot_pool_real_array_write_access_ptr(*write);
-}
-
-static godot_variant vg_reals_close(godot_pool_real_array* values, godot_pool_real_array_write_access* write, int ok) {
-    godot_variant out;
-    vg_core->godot_pool_real_array_write_access_destroy(write);
-    if (ok) vg_core->godot_variant_new_pool_real_array(&out, values);
-    else out = vg_variant_nil();
-    vg_core->godot_pool_real_array_destroy(values);
-    return out;
-}
-
 VG_METHOD(get_action_probabilities) {
     vg_call c;
     verve_agent* a;

@@ -22,6 +22,7 @@ export class Agent {
     this.actionBranches = desc.actionBranches;
     // Mask flags and probabilities: one per action, or one per choice of each branch.
     this.numChoices = desc.actionBranches.length === 0 ? desc.actions : desc.actionBranches.reduce((a, b) => a + b, 0);
+    this.numContinuousActions = desc.continuousActions;
     this.numDiscrete = desc.discrete.length;
     this.numContinuous = desc.continuous.length;
   }
@@ -195,6 +196,27 @@ export class Agent {
       return out;
     }
     return values.slice();
+  }
+
+  /**
+   * The continuous actions of the latest update (descriptor.continuousActions values, each in
+   * [-1, 1]): drawn around the policy's mean, or the mean itself when greedy; 0s before the first
+   * update. Into `out` when given (a Float32Array of at least that many): nothing is allocated, so
+   * a game can read them every frame.
+   */
+  continuousAction(out) {
+    const h = this.live();
+    const n = this.numContinuousActions;
+    if (out !== undefined && (!(out instanceof Float32Array) || out.length < n)) {
+      throw invalidArgument(`continuousAction(out) needs a Float32Array of at least ${n} entries`);
+    }
+    const rt = this.rt;
+    const p = rt.carveOne(4 * Math.max(n, 1));  // the library wants a pointer even for 0 values
+    rt.check(rt.m._verve_agent_get_continuous_action(h, p, n));
+    const values = out ?? new Float32Array(n);
+    const f32 = rt.heap.f32;
+    for (let i = 0; i < n; ++i) values[i] = f32[(p >> 2) + i];
+    return values;
   }
 
   readFloat(fn) {

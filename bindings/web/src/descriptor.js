@@ -7,6 +7,7 @@ export const MAX_DISCRETE_SENSORS = 16;
 export const MAX_CONTINUOUS_SENSORS = 16;
 export const MAX_SENSOR_GROUPS = 64;
 export const MAX_ACTION_BRANCHES = 8;
+export const MAX_CONTINUOUS_ACTIONS = 8;
 
 // Indices into the layout table of wasm/verve_web_layout.c.
 export const L = Object.freeze({
@@ -20,8 +21,9 @@ export const L = Object.freeze({
   statsModelError: 33, statsPredictedUncertainty: 34, statsPlanningSteps: 35, statsCuriosityReward: 36,
   statsRbfBudgetHits: 37, statsClampedRewards: 38, batchWorkerCount: 39, adaptation: 40,
   sensorGrouping: 41, numSensorGroups: 42, sensorGroups: 43, numActionBranches: 44, actionBranches: 45,
+  numContinuousActions: 46,
 });
-export const LAYOUT_LENGTH = 46;
+export const LAYOUT_LENGTH = 47;
 
 const ENUMS = {
   allocation: ['dynamic', 'full'],
@@ -55,7 +57,8 @@ const SCALARS = [
   ['adaptation', 'adaptation', 'u64'],
   ['grouping', 'sensorGrouping', 'enum'],
 ];
-const KNOWN = new Set(['discrete', 'continuous', 'sensorGroups', 'actionBranches', ...SCALARS.map(([name]) => name)]);
+const KNOWN = new Set(['discrete', 'continuous', 'sensorGroups', 'actionBranches', 'continuousActions',
+  ...SCALARS.map(([name]) => name)]);
 
 function describe(value) {
   if (value === null) return 'null';
@@ -149,6 +152,14 @@ export function checkDescriptor(desc) {
   if (desc.sensorGroups !== undefined) out.sensorGroups = checkSensorGroups(desc.sensorGroups);
   checkGroupsFitSensors(out);
   if (desc.actionBranches !== undefined) out.actionBranches = checkActionBranches(desc.actionBranches);
+  if (desc.continuousActions !== undefined) {
+    // Checked here so that the error names this field (the library's names num_continuous_actions).
+    const n = desc.continuousActions;
+    if (!Number.isInteger(n) || n < 0 || n > MAX_CONTINUOUS_ACTIONS) {
+      throw invalidArgument(`descriptor.continuousActions must be an integer from 0 to ${MAX_CONTINUOUS_ACTIONS} (got ${describe(n)})`);
+    }
+    out.continuousActions = n;
+  }
   return out;
 }
 
@@ -258,6 +269,16 @@ export function writeDescriptor(heap, layout, ptr, desc) {
     // Without `actions`: 0, which the library sets to the branches' product.
     if (desc.actions === undefined && desc.actionBranches.length > 0) u32[at('numActions') >> 2] = 0;
   }
+  if (desc.continuousActions !== undefined) {
+    const p = at('numContinuousActions') >> 2;  // a uint64: the count, then 0
+    u32[p] = desc.continuousActions;
+    u32[p + 1] = 0;
+    // Without `actions` or branches: 0, which the library makes the one discrete action of an
+    // agent that only steers (not the default 2).
+    if (desc.actions === undefined && !(desc.actionBranches?.length > 0) && desc.continuousActions > 0) {
+      u32[at('numActions') >> 2] = 0;
+    }
+  }
   for (const [name, field, kind] of SCALARS) {
     const value = desc[name];
     if (value === undefined) continue;
@@ -296,6 +317,8 @@ export function readDescriptor(heap, layout, ptr) {
     continuous: Array.from({ length: Math.min(nc, MAX_CONTINUOUS_SENSORS) }, (_, i) => ({ circular: u8[at('circular') + i] !== 0 })),
     actionBranches: Array.from({ length: Math.min(u32[at('numActionBranches') >> 2], MAX_ACTION_BRANCHES) },
       (_, b) => u32[(at('actionBranches') >> 2) + b]),
+    // A uint64 the library keeps within 0..8: its high word is 0.
+    continuousActions: u32[at('numContinuousActions') >> 2],
     sensorGroups: Array.from({ length: Math.min(u32[at('numSensorGroups') >> 2], MAX_SENSOR_GROUPS) }, (_, g) => {
       const p = (at('sensorGroups') >> 2) + 2 * g;
       const sensors = [];

@@ -57,6 +57,15 @@ export class Runtime {
     return offsets.map((at) => this.scratchPtr + at);
   }
 
+  /**
+   * carve() for a single block, without the arrays carve() makes: read-outs a game calls every
+   * frame into its own buffer (Agent.continuousAction(out)) then allocate nothing.
+   */
+  carveOne(size) {
+    if (size > this.scratchSize) this.carve([size]);
+    return this.scratchPtr;
+  }
+
   /** Bytes copied into a fresh malloc'ed block (the caller frees it). */
   copyIn(bytes) {
     const ptr = this.m._malloc(Math.max(bytes.length, 1));

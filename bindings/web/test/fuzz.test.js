@@ -34,6 +34,7 @@ test(`fuzz: ${ITERATIONS} random calls (seed ${SEED})`, () => {
     verve.createAgent({ continuous: 2, actions: 2, planning: true, curiosity: 'novelty', seed: 3 }),
     brain.createBody(),
     brain.createBody(),
+    verve.createAgent({ continuous: 1, continuousActions: 2, seed: 4 }),
   ];
   const batch = verve.createBatch();
   const calls = [
@@ -45,6 +46,10 @@ test(`fuzz: ${ITERATIONS} random calls (seed ${SEED})`, () => {
     (a) => a.setLearning(pick([true, false, anything()])),
     (a) => a.setActionSelection(pick(['sample', 'greedy', anything()])),
     (a) => a.actionProbabilities(pick([undefined, new Float32Array(3), new Float32Array(1), anything()])),
+    (a) => a.continuousAction(pick([undefined, new Float32Array(2), new Float32Array(1), new Float32Array(0), anything()])),
+    // Descriptors with continuous actions: created, or refused with a VerveError.
+    () => verve.createAgent({ continuous: pick([0, 1, 2]), continuousActions: pick([0, 1, 8, 9, -1, 1.5, NaN, ints(), anything()]),
+      actions: pick([undefined, 1, 3, 0]), actionBranches: pick([undefined, [2, 2]]), planning: pick([false, true]) }).dispose(),
     (a) => a.sampleValues(pick([[{ kind: 'continuous', index: ints(), samples: ints() }], [{ kind: pick(['discrete', 'continuous', 'x']), index: 0, samples: 5 }, { kind: 'continuous', index: 1, samples: 3 }], anything()]), pick([undefined, observation()])),
     (a) => a.stats(),
     (a) => a.descriptor(),

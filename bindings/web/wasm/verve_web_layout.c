@@ -28,6 +28,8 @@ static const uint32_t layout[] = {
     D(sensor_grouping), D(num_sensor_groups), D(sensor_groups),
     /* 44: verve_agent_desc, V6 */
     D(num_action_branches), D(action_branches),
+    /* 46: verve_agent_desc, V7 */
+    D(num_continuous_actions),
 };
 
 /* The table above and its length. */

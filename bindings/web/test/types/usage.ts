@@ -19,6 +19,11 @@ const branched = verve.createAgent({ continuous: 2, actionBranches: [3, 3, 2] })
 const [move, turn, use]: number[] = branched.splitAction(branched.update(0, { continuous: [0, 0] }, 0.1));
 const joined: number = branched.joinAction([move, turn, use]);
 const sizes: number[] = branched.descriptor().actionBranches;
+const car = verve.createAgent({ continuous: 2, continuousActions: 2 });  // actions: 1
+car.update(0, { continuous: [0, 0] }, 0.1);
+const controls: Float32Array = car.continuousAction(new Float32Array(car.numContinuousActions));
+const steer: number = car.continuousAction()[0];
+const count: number = car.descriptor().continuousActions;
 const bodies = [brain.createBody(), brain.createBody()];
 const actions: Uint32Array = verve.createBatch().update(bodies, [0, 0], [{ continuous: [0, 0] }, null], 0.05);
 agent.setActionSelection('greedy');
@@ -33,10 +38,14 @@ verve.createAgent({ tauVale: 1 });
 verve.createAgent({ grouping: 'pairs' });
 // @ts-expect-error action branches are a list of sizes
 verve.createAgent({ actionBranches: 3 });
+// @ts-expect-error continuous actions are a count
+verve.createAgent({ continuousActions: [2] });
+// @ts-expect-error continuousAction fills a Float32Array
+car.continuousAction([0, 0]);
 // @ts-expect-error the selection is 'sample' or 'greedy'
 agent.setActionSelection('best');
 // @ts-expect-error a reward is a number
 agent.update('1', null, 0.1);
 console.log(action, p, values, copy.rbfCount(), actions, agent.stats().steps, verve.defaults().tauValue);
-console.log(groups, joined, sizes, branched.numChoices);
-for (const x of [agent, copy, npc, custom, branched, ...bodies, brain]) x.dispose();
+console.log(groups, joined, sizes, branched.numChoices, controls, steer, count);
+for (const x of [agent, copy, npc, custom, branched, car, ...bodies, brain]) x.dispose();

@@ -1,0 +1,191 @@
+# Continuous actions inside the real engine: the option "continuous_actions" (0 .. 8) reaches
+# libverve and comes back in get_options() ("actions" left out: the one trivial discrete action);
+# continuous_action() gives the latest update's values, each in [-1, 1], the same ones again when
+# greedy; saves keep them and their exploration noise, so a loaded agent's next values are the
+# saved one's; brains and the VerveAgentNode node (Extra Options) take them; every refusal returns
+# false or null with the plugin's or the library's message and changes nothing.
+#   godot3-server --path build/godot/tests --script res://test_continuous_actions.gd   (exit code 1 on a failure)
+extends "res://checks.gd"
+
+const VerveAgent = preload("res://addons/verve/verve_agent.gdns")
+const VerveBrain = preload("res://addons/verve/verve_brain.gdns")
+const AgentNode = preload("res://addons/verve/verve_agent_node.gd")
+
+
+func driver(extra = {}):
+	var options = {"continuous_sensor_circular": [true, false], "continuous_actions": 2, "seed": 7}
+	for key in extra:
+		options[key] = extra[key]
+	return options
+
+
+func readings(step):
+	return PoolRealArray([sin(step * 0.37), cos(step * 0.21) * 0.9])
+
+
+func new_agent(options):
+	var agent = VerveAgent.new()
+	check(agent.create(options), "create(%s): %s" % [options, agent.get_last_error()])
+	return agent
+
+
+# Element by element: the values are float32 both sides, so equal means bit-identical.
+func same(a, b):
+	if a == null or b == null or a.size() != b.size():
+		return false
+	for i in a.size():
+		if a[i] != b[i]:
+			return false
+	return true
+
+
+func within_bounds(values, n):
+	if typeof(values) != TYPE_REAL_ARRAY or values.size() != n:
+		return false
+	for v in values:
+		if v < -1.0 or v > 1.0:
+			return false
+	return true
+
+
+func test_options():
+	check(VerveAgent.new().get_default_options()["continuous_actions"] == 0, "no continuous actions is the default")
+	var agent = new_agent(driver())
+	var o = agent.get_options()
+	check(o["continuous_actions"] == 2 and o["actions"] == 1, "continuous actions without 'actions': one discrete action (%s)" % o)
+	check(new_agent(o).get_options().hash() == o.hash(), "get_options() feeds create()")
+	check(new_agent(driver({"actions": 3})).get_options()["actions"] == 3, "'actions' given beside continuous actions")
+	var both = new_agent(driver({"action_branches": [3, 2]})).get_options()
+	check(both["actions"] == 6 and both["continuous_actions"] == 2, "branches and continuous actions together: %s" % both)
+	check(new_agent(driver({"continuous_actions": 8})).get_options()["continuous_actions"] == 8, "8, the most")
+
+
+func test_values():
+	var agent = new_agent(driver())
+	check(same(agent.continuous_action(), PoolRealArray([0.0, 0.0])), "0s before the first update")
+	var bounded = true
+	var only_action = true
+	var distinct = {}
+	for step in 200:
+		only_action = only_action and agent.update(0.1 if step % 9 == 0 else 0.0, [], readings(step), 0.1) == 0
+		var values = agent.continuous_action()
+		bounded = bounded and within_bounds(values, 2)
+		distinct[values[0]] = true
+	check(only_action, "the one discrete action is 0 on every update")
+	check(bounded, "two values, each in [-1, 1], after every update")
+	check(distinct.size() > 50, "sampled values vary from step to step (%d distinct of 200)" % distinct.size())
+	var plain = new_agent({"actions": 3})
+	plain.update(0.0, [], [], 0.1)
+	var none = plain.continuous_action()
+	check(typeof(none) == TYPE_REAL_ARRAY and none.size() == 0, "no continuous actions: an empty PoolRealArray")
+
+
+func test_greedy():
+	var agent = new_agent(driver())
+	for step in 200:
+		agent.update(0.5 if step % 4 == 0 else -0.1, [], readings(step), 0.1)
+	agent.greedy = true
+	agent.learning = false  # so that the weights, hence the mean, stay as they are
+	agent.update(0.0, [], readings(3), 0.1)
+	var first = agent.continuous_action()
+	agent.update(0.0, [], readings(50), 0.1)
+	var elsewhere = agent.continuous_action()
+	agent.update(0.0, [], readings(3), 0.1)
+	check(within_bounds(first, 2) and same(agent.continuous_action(), first),
+		"greedy: the same observation gives the same values (%s, then %s)" % [first, agent.continuous_action()])
+	check(not same(elsewhere, first), "greedy values follow the observation")
+	var copy = VerveAgent.new()
+	check(copy.load_bytes(agent.save_bytes()), "load_bytes: " + copy.get_last_error())
+	copy.greedy = true
+	copy.learning = false
+	copy.update(0.0, [], readings(3), 0.1)
+	check(same(copy.continuous_action(), first), "a loaded copy's greedy values are the same")
+
+
+func test_saves_and_brains():
+	var a = new_agent(driver())
+	for step in 100:
+		a.update(1.0 if step % 7 == 0 else 0.0, [], readings(step), 0.1)
+	var copy = VerveAgent.new()
+	check(copy.load_bytes(a.save_bytes()), "load_bytes: " + copy.get_last_error())
+	var from_file = VerveAgent.new()
+	check(a.save("user://test_continuous_actions.xml") and from_file.load("user://test_continuous_actions.xml"),
+		"save/load: " + a.get_last_error() + from_file.get_last_error())
+	for loaded in [copy, from_file]:
+		check(loaded.get_options()["continuous_actions"] == 2, "a save keeps the continuous actions")
+		check(same(loaded.continuous_action(), a.continuous_action()), "a save keeps the latest values")
+	var same_next = true
+	for step in range(100, 140):
+		a.update(0.0, [], readings(step), 0.1)
+		var values = a.continuous_action()
+		for loaded in [copy, from_file]:
+			loaded.update(0.0, [], readings(step), 0.1)
+			same_next = same_next and same(loaded.continuous_action(), values)
+	check(same_next, "loaded agents sample the same next values as the saved one (noise and generator saved)")
+	var brain = VerveBrain.new()
+	check(brain.create(driver()), "VerveBrain.create: " + brain.get_last_error())
+	var body = brain.create_body()
+	check(body.update(0.0, [], readings(0), 0.1) == 0 and within_bounds(body.continuous_action(), 2),
+		"a body of a brain with continuous actions: %s" % [body.continuous_action()])
+	var binary = VerveBrain.new()
+	check(binary.load_bytes(brain.save_binary_bytes()), "VerveBrain.load_bytes: " + binary.get_last_error())
+	check(binary.create_body().get_options()["continuous_actions"] == 2, "a binary brain save keeps them")
+
+	# The node, as docs/godot.md says: Actions at 1, the continuous actions through extra_options.
+	var node = AgentNode.new()
+	node.actions = 1
+	node.continuous_sensors = 2
+	node.extra_options = {"continuous_actions": 2}
+	root.add_child(node)
+	check(node.get_options()["continuous_actions"] == 2, "a node's continuous actions through extra_options: %s" % node.last_error)
+	check(node.act(0.0, [], readings(0), 0.1) == 0 and within_bounds(node.agent.continuous_action(), 2),
+		"a node's decision reads its continuous values from node.agent")
+	node.queue_free()
+
+
+# docs/godot.md, "Continuous actions", as written there.
+func test_doc_driver():
+	var reward = 0.0
+	var dt = 0.1
+	var readings = PoolRealArray([0.3, -0.8])  # bearing to the target (wraps), distance
+	var agent = VerveAgent.new()
+	var max_steer = 0.6
+	var max_force = 40.0
+	# steer and throttle, each in [-1, 1]; no discrete choice ("actions" left out: 1)
+	check(agent.create({"continuous_sensor_circular": [true, false], "continuous_actions": 2}), agent.get_last_error())
+	agent.update(reward, [], readings, dt)  # the one discrete action, 0
+	var act = agent.continuous_action()     # [steer, throttle]
+	var steering = act[0] * max_steer
+	var engine_force = act[1] * max_force
+	check(abs(steering) <= max_steer and abs(engine_force) <= max_force, "the doc's driver: %s" % [act])
+
+
+func test_refusals():
+	var agent = new_agent(driver())
+	agent.update(0.0, [], readings(0), 0.1)
+	var before = agent.get_options().hash()
+	var bad = [
+		[{"continuous_actions": 9}, "option 'continuous_actions' must be an int from 0 to 8 (got 9)"],
+		[{"continuous_actions": -1}, "option 'continuous_actions' must be an int from 0 to 8 (got -1)"],
+		[{"continuous_actions": 1.5}, "option 'continuous_actions' must be an int from 0 to 8 (got float)"],
+		[{"continuous_actions": [2]}, "option 'continuous_actions' must be an int from 0 to 8 (got Array)"],
+		[{"planning": true}, "planning needs discrete actions only"],
+	]
+	for case in bad:
+		check_error(agent, agent.create(driver(case[0])), false, case[1], "create(%s)" % [case[0]])
+	check(agent.has_agent() and agent.get_options().hash() == before, "a refused create() keeps the agent")
+	check_error(agent, agent.continuous_action(1), null, "takes 0 arguments (got 1)", "continuous_action(1)")
+	var empty = VerveAgent.new()
+	check_error(empty, empty.continuous_action(), null, "has no agent", "continuous_action without an agent")
+	check(within_bounds(agent.continuous_action(), 2), "the agent still answers")
+
+
+func _init():
+	test_options()
+	test_values()
+	test_greedy()
+	test_saves_and_brains()
+	test_doc_driver()
+	test_refusals()
+	report("verve godot continuous actions")
+	quit()
