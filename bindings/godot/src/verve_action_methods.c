@@ -1,6 +1,6 @@
 /* verve_action_methods.c - action branches and continuous actions on a VerveAgent:
  * split_action(action) -> Array of one choice per branch, join_action(choices) -> the combined
- * action, continuous_action() -> the latest update's continuous values. Actions and choices count
+ * action, get_continuous_action() -> the latest update's continuous values. Actions and choices count
  * from 0, as every action of this plugin; branch 0 varies fastest. A failure prints a Godot error
  * and returns null or -1. */
 #include "verve_agent_methods.h"
@@ -67,7 +67,7 @@ VG_METHOD(join_action) {
     return vg_variant_int(action);
 }
 
-VG_METHOD(continuous_action) {
+VG_METHOD(get_continuous_action) {
     vg_call c;
     verve_agent* a;
     verve_agent_desc d;
@@ -78,7 +78,7 @@ VG_METHOD(continuous_action) {
     uint32_t n;
     VG_UNUSED;
     verve_agent_desc_default(&d);
-    if (!vg_begin(&c, user_data, "continuous_action", argc, argv, 0, 0) || !vg_agent_handle(&c, &a) ||
+    if (!vg_begin(&c, user_data, "get_continuous_action", argc, argv, 0, 0) || !vg_agent_handle(&c, &a) ||
         !vg_check(&c, verve_agent_get_desc(a, &d)))
         return vg_variant_nil();
     n = d.num_continuous_actions <= VERVE_MAX_CONTINUOUS_ACTIONS ? (uint32_t)d.num_continuous_actions : 0;

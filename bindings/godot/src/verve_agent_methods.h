@@ -29,7 +29,7 @@ VG_DECLARE(get_rbf_count)
 VG_DECLARE(get_action_probabilities)
 VG_DECLARE(split_action) /* verve_action_methods.c */
 VG_DECLARE(join_action)
-VG_DECLARE(continuous_action)
+VG_DECLARE(get_continuous_action)
 VG_DECLARE(get_stats)
 VG_DECLARE(sample_values)
 VG_DECLARE(has_agent)

@@ -100,7 +100,7 @@ static const vg_method_info vg_agent_methods[] = {
      "The combined action of one choice per action branch (each from 0, branch 0 varying fastest); -1 on error. "
      "-> int",
      1, {{"choices", GODOT_VARIANT_TYPE_ARRAY}}},
-    {"continuous_action", vg_continuous_action,
+    {"get_continuous_action", vg_get_continuous_action,
      "The continuous actions of the latest update (option \"continuous_actions\"), each in [-1, 1]: sampled "
      "around the policy's mean, or the mean itself when greedy; 0s before the first update. -> PoolRealArray",
      0, {{0}}},

@@ -1,6 +1,6 @@
 # Continuous actions inside the real engine: the option "continuous_actions" (0 .. 8) reaches
 # libverve and comes back in get_options() ("actions" left out: the one trivial discrete action);
-# continuous_action() gives the latest update's values, each in [-1, 1], the same ones again when
+# get_continuous_action() gives the latest update's values, each in [-1, 1], the same ones again when
 # greedy; saves keep them and their exploration noise, so a loaded agent's next values are the
 # saved one's; brains and the VerveAgentNode node (Extra Options) take them; every refusal returns
 # false or null with the plugin's or the library's message and changes nothing.
@@ -62,13 +62,13 @@ func test_options():
 
 func test_values():
 	var agent = new_agent(driver())
-	check(same(agent.continuous_action(), PoolRealArray([0.0, 0.0])), "0s before the first update")
+	check(same(agent.get_continuous_action(), PoolRealArray([0.0, 0.0])), "0s before the first update")
 	var bounded = true
 	var only_action = true
 	var distinct = {}
 	for step in 200:
 		only_action = only_action and agent.update(0.1 if step % 9 == 0 else 0.0, [], readings(step), 0.1) == 0
-		var values = agent.continuous_action()
+		var values = agent.get_continuous_action()
 		bounded = bounded and within_bounds(values, 2)
 		distinct[values[0]] = true
 	check(only_action, "the one discrete action is 0 on every update")
@@ -76,7 +76,7 @@ func test_values():
 	check(distinct.size() > 50, "sampled values vary from step to step (%d distinct of 200)" % distinct.size())
 	var plain = new_agent({"actions": 3})
 	plain.update(0.0, [], [], 0.1)
-	var none = plain.continuous_action()
+	var none = plain.get_continuous_action()
 	check(typeof(none) == TYPE_REAL_ARRAY and none.size() == 0, "no continuous actions: an empty PoolRealArray")
 
 
@@ -87,19 +87,19 @@ func test_greedy():
 	agent.greedy = true
 	agent.learning = false  # so that the weights, hence the mean, stay as they are
 	agent.update(0.0, [], readings(3), 0.1)
-	var first = agent.continuous_action()
+	var first = agent.get_continuous_action()
 	agent.update(0.0, [], readings(50), 0.1)
-	var elsewhere = agent.continuous_action()
+	var elsewhere = agent.get_continuous_action()
 	agent.update(0.0, [], readings(3), 0.1)
-	check(within_bounds(first, 2) and same(agent.continuous_action(), first),
-		"greedy: the same observation gives the same values (%s, then %s)" % [first, agent.continuous_action()])
+	check(within_bounds(first, 2) and same(agent.get_continuous_action(), first),
+		"greedy: the same observation gives the same values (%s, then %s)" % [first, agent.get_continuous_action()])
 	check(not same(elsewhere, first), "greedy values follow the observation")
 	var copy = VerveAgent.new()
 	check(copy.load_bytes(agent.save_bytes()), "load_bytes: " + copy.get_last_error())
 	copy.greedy = true
 	copy.learning = false
 	copy.update(0.0, [], readings(3), 0.1)
-	check(same(copy.continuous_action(), first), "a loaded copy's greedy values are the same")
+	check(same(copy.get_continuous_action(), first), "a loaded copy's greedy values are the same")
 
 
 func test_saves_and_brains():
@@ -113,20 +113,20 @@ func test_saves_and_brains():
 		"save/load: " + a.get_last_error() + from_file.get_last_error())
 	for loaded in [copy, from_file]:
 		check(loaded.get_options()["continuous_actions"] == 2, "a save keeps the continuous actions")
-		check(same(loaded.continuous_action(), a.continuous_action()), "a save keeps the latest values")
+		check(same(loaded.get_continuous_action(), a.get_continuous_action()), "a save keeps the latest values")
 	var same_next = true
 	for step in range(100, 140):
 		a.update(0.0, [], readings(step), 0.1)
-		var values = a.continuous_action()
+		var values = a.get_continuous_action()
 		for loaded in [copy, from_file]:
 			loaded.update(0.0, [], readings(step), 0.1)
-			same_next = same_next and same(loaded.continuous_action(), values)
+			same_next = same_next and same(loaded.get_continuous_action(), values)
 	check(same_next, "loaded agents sample the same next values as the saved one (noise and generator saved)")
 	var brain = VerveBrain.new()
 	check(brain.create(driver()), "VerveBrain.create: " + brain.get_last_error())
 	var body = brain.create_body()
-	check(body.update(0.0, [], readings(0), 0.1) == 0 and within_bounds(body.continuous_action(), 2),
-		"a body of a brain with continuous actions: %s" % [body.continuous_action()])
+	check(body.update(0.0, [], readings(0), 0.1) == 0 and within_bounds(body.get_continuous_action(), 2),
+		"a body of a brain with continuous actions: %s" % [body.get_continuous_action()])
 	var binary = VerveBrain.new()
 	check(binary.load_bytes(brain.save_binary_bytes()), "VerveBrain.load_bytes: " + binary.get_last_error())
 	check(binary.create_body().get_options()["continuous_actions"] == 2, "a binary brain save keeps them")
@@ -138,7 +138,7 @@ func test_saves_and_brains():
 	node.extra_options = {"continuous_actions": 2}
 	root.add_child(node)
 	check(node.get_options()["continuous_actions"] == 2, "a node's continuous actions through extra_options: %s" % node.last_error)
-	check(node.act(0.0, [], readings(0), 0.1) == 0 and within_bounds(node.agent.continuous_action(), 2),
+	check(node.act(0.0, [], readings(0), 0.1) == 0 and within_bounds(node.agent.get_continuous_action(), 2),
 		"a node's decision reads its continuous values from node.agent")
 	node.queue_free()
 
@@ -154,7 +154,7 @@ func test_doc_driver():
 	# steer and throttle, each in [-1, 1]; no discrete choice ("actions" left out: 1)
 	check(agent.create({"continuous_sensor_circular": [true, false], "continuous_actions": 2}), agent.get_last_error())
 	agent.update(reward, [], readings, dt)  # the one discrete action, 0
-	var act = agent.continuous_action()     # [steer, throttle]
+	var act = agent.get_continuous_action()     # [steer, throttle]
 	var steering = act[0] * max_steer
 	var engine_force = act[1] * max_force
 	check(abs(steering) <= max_steer and abs(engine_force) <= max_force, "the doc's driver: %s" % [act])
@@ -174,10 +174,10 @@ func test_refusals():
 	for case in bad:
 		check_error(agent, agent.create(driver(case[0])), false, case[1], "create(%s)" % [case[0]])
 	check(agent.has_agent() and agent.get_options().hash() == before, "a refused create() keeps the agent")
-	check_error(agent, agent.continuous_action(1), null, "takes 0 arguments (got 1)", "continuous_action(1)")
+	check_error(agent, agent.get_continuous_action(1), null, "takes 0 arguments (got 1)", "get_continuous_action(1)")
 	var empty = VerveAgent.new()
-	check_error(empty, empty.continuous_action(), null, "has no agent", "continuous_action without an agent")
-	check(within_bounds(agent.continuous_action(), 2), "the agent still answers")
+	check_error(empty, empty.get_continuous_action(), null, "has no agent", "continuous_action without an agent")
+	check(within_bounds(agent.get_continuous_action(), 2), "the agent still answers")
 
 
 func _init():
