@@ -39,8 +39,8 @@ struct ContinuousPolicy {
     // return of the last 100 episodes after 100k steps): 1 solved 0 of 4 seeds (-992), 0.2 2 of 8
     // (-468), 0.1 12 of 16 (-234), 0.05 5 of 8 (-259).
     static constexpr float kStepScale = 0.1f;
-    // No draw of normalDraw() reaches it (its radius is at most sqrt(2 ln 2^24) = 5.8): a save's
-    // noise beyond it is corrupt.
+    // The running noise stays within it (one draw's radius is at most sqrt(2 ln 2^24) = 5.8; a run
+    // of large draws is clamped): a save's noise beyond it is corrupt.
     static constexpr float kNoiseLimit = 6.0f;
     static float spread(float y);
 };

@@ -115,8 +115,9 @@ bool TdLearner::stepFor(float delta, TdRates rates, float* step) const {
     // A trace row [value, policy[A]] lines up with the first 1 + A weights of its feature's row.
     std::fill_n(step, stride_, rates.policy * delta);
     step[0] = rates.value * delta;
-    // Bounded actor weights: every row trained now is clamped after the kernel has moved it. Traces
-    // are never negative (mark() keeps the larger of activation and trace), so every actor weight
+    // Bounded actor weights: every row trained now is clamped after the kernel has moved it. The
+    // discrete neurons' traces are never negative (mark() keeps the larger of activation and trace;
+    // the continuous columns', of either sign, are clamped apart), so every such actor weight
     // moves the way rates.policy * delta points: only when that side is bounded is there anything
     // to clamp (with the habit ceiling alone, only after a positive TD error).
     return rates.policyRange.crossable(rates.policy * delta);
