@@ -21,13 +21,14 @@ namespace {
 const char* const kAgentMethods[] = {"update", "end_episode", "truncate_episode", "reset_short_term_memory",
                                      "set_learning", "learning", "set_action_selection", "action_selection",
                                      "action_probabilities", "descriptor", "value", "td_error", "rbf_count", "stats",
-                                     "sample_values", "save_string", "save_binary_string", "close"};
+                                     "sample_values", "save_string", "save_binary_string", "close", "split_action",
+                                     "join_action", "continuous_action"};
 const char* const kBrainMethods[] = {"body", "rbf_count", "save_string", "save_binary_string", "close"};
 const char* const kBatchMethods[] = {"update", "update", "update", "workers", "close"};
 const char* const kFunctions[] = {"agent", "load_string", "defaults", "version", "brain", "load_brain_string", "batch"};
 const char* const kDescriptorKeys[] = {"discrete", "continuous", "resolution", "actions", "allocation", "tau_value",
                                        "tau_discount", "planning", "curiosity", "seed", "circular", "kind",
-                                       "index", "samples", "workers"};
+                                       "index", "samples", "workers", "action_branches", "continuous_actions"};
 
 // __index of a trap table: closes the agent, brain or batch kept as upvalue 1, then answers as
 // upvalue 2 says: a plausible number, nil (no such field) or a list of two numbers (a sensor list),
