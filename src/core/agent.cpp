@@ -316,8 +316,10 @@ std::uint32_t Agent::Impl::step(float reward, ObservationView obs, float dt, Act
     if (overBudget) s.noteBudgetReached();
     const float r = s.learnedReward(reward);
     s.lastDt = dt;
-    if (s.learning) s.trialSeconds += dt;
-    if (s.learning) s.stretch.see(s.hasPrevious, r, dt);
+    if (s.learning) {
+        s.trialSeconds += dt;
+        s.stretch.see(s.hasPrevious, r, dt);
+    }
 
     const bool plans = s.learning && s.desc.planning;
     const StepConstants k = s.constantsFor(dt);

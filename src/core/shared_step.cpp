@@ -32,8 +32,10 @@ bool Agent::Impl::prepareShared(float reward, ObservationView obs, float dt, cor
     seen.seesReward = s.learning && s.hasPrevious;
     seen.reward = r;
     s.lastDt = dt;
-    if (s.learning) s.trialSeconds += dt;
-    if (s.learning) s.stretch.see(s.hasPrevious, r, dt);
+    if (s.learning) {
+        s.trialSeconds += dt;
+        s.stretch.see(s.hasPrevious, r, dt);
+    }
 
     // The brain's reward range as a single update would see it: with this reward in it.
     core::RewardRange rewards = s.brain->rewards;

@@ -5,6 +5,13 @@ extends SceneTree
 var failures = 0
 
 
+# A new agent made from `options`, its creation checked (scripts with default options override it).
+func new_agent(options):
+	var agent = preload("res://addons/verve/verve_agent.gdns").new()
+	check(agent.create(options), "create(%s): %s" % [options, agent.get_last_error()])
+	return agent
+
+
 func check(condition, what):
 	if not condition:
 		failures += 1

@@ -23,11 +23,6 @@ func readings(step):
 	return PoolRealArray([sin(step * 0.37), cos(step * 0.21) * 0.9])
 
 
-func new_agent(options):
-	var agent = VerveAgent.new()
-	check(agent.create(options), "create(%s): %s" % [options, agent.get_last_error()])
-	return agent
-
 
 func test_options():
 	check(VerveAgent.new().get_default_options()["action_branches"] == [], "one action set is the default")

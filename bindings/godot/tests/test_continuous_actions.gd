@@ -23,11 +23,6 @@ func readings(step):
 	return PoolRealArray([sin(step * 0.37), cos(step * 0.21) * 0.9])
 
 
-func new_agent(options):
-	var agent = VerveAgent.new()
-	check(agent.create(options), "create(%s): %s" % [options, agent.get_last_error()])
-	return agent
-
 
 # Element by element: the values are float32 both sides, so equal means bit-identical.
 func same(a, b):

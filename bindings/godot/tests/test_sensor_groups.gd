@@ -29,11 +29,6 @@ func readings(step, n):
 	return r
 
 
-func new_agent(options):
-	var agent = VerveAgent.new()
-	check(agent.create(options), "create(%s): %s" % [options, agent.get_last_error()])
-	return agent
-
 
 func test_auto_and_joint():
 	var defaults = VerveAgent.new().get_default_options()
