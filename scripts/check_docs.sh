@@ -131,6 +131,17 @@ in_doc docs/web.md 'cmake --build --preset web-release -j2'      # the suite (wi
 in_doc docs/web.md 'node samples/web/serve.mjs'
 doc docs/web.md 'node --expose-gc --test bindings/web/test/'
 doc docs/web.md 'cd bindings/web && npm pack' '(cd bindings/web && npm pack --dry-run)'
+# doc_code FILE SOURCE: FILE quotes SOURCE whole, as the fenced block that starts with SOURCE's first
+# line (the doc's NPC scripts are the tests' own: a change to either fails here until both agree).
+doc_code() {
+  local first
+  first=$(head -n 1 "$2")
+  awk -v first="$first" '$0 == first { on = 1 } on && /^```/ { exit } on { print }' "$1" | diff -q - "$2" >/dev/null && return 0
+  echo "check_docs: $1 does not quote $2 as it is" >&2
+  failures=$((failures + 1))
+}
+doc_code docs/godot.md bindings/godot/tests/line_npc.gd
+doc_code docs/godot.md bindings/godot/tests/npc.gd
 in_doc docs/godot.md './scripts/setup.sh --test'
 ctest_doc docs/godot.md "ctest --test-dir build -R '^godot\.'"
 in_doc docs/godot.md 'cp -r build/godot/addons/verve  path/to/your/project/addons/'

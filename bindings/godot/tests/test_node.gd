@@ -1,5 +1,6 @@
 # The VerveAgentNode addon node in the real engine: exports reach the native agent, signals fire,
-# refusals surface, the debug overlay draws, and docs/godot.md's line NPC (line_npc.gd) learns.
+# refusals surface, the debug overlay draws, and docs/godot.md's line NPC learns, with the node
+# (line_npc.gd) and without it (npc.gd).
 #   godot3-server --path build/godot/tests --fixed-fps 60 --script res://test_node.gd
 # (exit code 1 on a failure).
 extends "res://checks.gd"
@@ -14,7 +15,7 @@ const LEARNED_MIN = 15.0
 const RATIO_MIN = 5.0
 
 var SEEDS = [1, 2, 3]      # other worlds: --verve-seeds=4,5,6
-var npcs = []             # learning, then frozen, one per seed
+var npcs = []             # with the node learning, then frozen, then without the node; one per seed
 var reached = []          # per NPC, targets reached in each simulated minute
 var overlaid              # an NPC whose brain shows the debug overlay
 var pair                  # a node with 2 continuous sensors: a 2-D heat map
@@ -143,6 +144,28 @@ func _on_episode_ended(_final_reward, truncated, index):
 		reached[index][min(frames / 3600, MINUTES - 1)] += 1
 
 
+# The same NPC without the node (npc.gd, the doc's second script): its own agent, seeded as the
+# node's is; its trial_ended signal counts the targets reached.
+func new_plain_npc(world_seed):
+	var npc = Node2D.new()
+	npc.set_script(load("res://npc.gd"))
+	npc.rng.seed = world_seed
+	npc.position.x = npc.rng.randf_range(0.0, 500.0)
+	root.add_child(npc)  # _ready: no save (removed below), so a new agent
+	npc.agent.create({"continuous_sensor_circular": [false], "actions": 2, "seed": world_seed})
+	var counts = []
+	counts.resize(MINUTES)
+	for m in MINUTES:
+		counts[m] = 0
+	reached.append(counts)
+	npc.connect("trial_ended", self, "_on_trial_ended", [reached.size() - 1])
+	return npc
+
+
+func _on_trial_ended(got_there, index):
+	_on_episode_ended(1.0, not got_there, index)
+
+
 func start_npcs():
 	for arg in OS.get_cmdline_args():
 		if arg.begins_with("--verve-seeds="):
@@ -152,6 +175,9 @@ func start_npcs():
 	for learns in [true, false]:
 		for s in SEEDS:
 			npcs.append(new_npc(s, learns))
+	Directory.new().remove("user://line_npc.xml")
+	for s in SEEDS:
+		npcs.append(new_plain_npc(s))
 	overlaid = npcs[0].get_node("Brain")
 	overlaid.debug_overlay = true
 	pair = new_node({"actions": 3, "continuous_sensors": 2, "debug_overlay": true})
@@ -183,9 +209,15 @@ func _idle(_delta):
 	print("line NPC, targets per minute over seeds %s: learning, minute 1 %.2f, minute %d %.2f; not learning %.2f"
 		% [SEEDS, first, MINUTES, last, frozen])
 	for i in reached.size():
-		print("  ", "learning" if i < SEEDS.size() else "frozen", " seed ", SEEDS[i % SEEDS.size()], ": ", reached[i])
+		print("  ", ["learning", "frozen", "without the node"][i / SEEDS.size()], " seed ", SEEDS[i % SEEDS.size()], ": ", reached[i])
 	check(last > LEARNED_MIN, "the line NPC learns: more than %.1f targets per minute in minute %d (got %.2f)" % [LEARNED_MIN, MINUTES, last])
 	check(last > RATIO_MIN * frozen, "more than %.1f times an NPC that does not learn (%.2f vs %.2f)" % [RATIO_MIN, last, frozen])
+	var plain_first = rate(2 * SEEDS.size(), 0)
+	var plain = rate(2 * SEEDS.size(), MINUTES - 1)
+	print("line NPC without the node: minute 1 %.2f, minute %d %.2f" % [plain_first, MINUTES, plain])
+	check(plain > LEARNED_MIN and plain > RATIO_MIN * frozen,
+		"the line NPC without the node learns as well: more than %.1f targets per minute in minute %d and %.1f times one that does not learn (got %.2f)"
+		% [LEARNED_MIN, MINUTES, RATIO_MIN, plain])
 	var overlay = overlaid.overlay
 	check(overlay != null and overlay.draws > 0 and overlay.rows == 1 and overlay.values.size() == overlay.COLUMNS,
 		"the overlay draws a 1-row heat map for 1 sensor")
@@ -196,10 +228,13 @@ func _idle(_delta):
 	var shown = wide.overlay
 	wide.debug_overlay = false
 	check(wide.overlay == null and shown.is_queued_for_deletion(), "turning debug_overlay off removes the overlay")
+	for i in range(2 * SEEDS.size(), npcs.size()):
+		npcs[i].queue_free()  # they save on exit; _finalize removes the save
 	quit()
 
 
 func _finalize():
+	Directory.new().remove("user://line_npc.xml")  # the NPCs without the node saved on exit
 	report("verve godot node")
 
 
