@@ -235,6 +235,8 @@ export class Verve {
   createRecording(agent: Agent): Recording;
   loadRecording(data: SaveData): Recording;
   createBatch(): Batch;
+  /** libverve's warnings since the previous call, oldest first (usually none): a reward clamped to [-1, 1], an agent's RBF budget reached, each once per agent. */
+  takeWarnings(): string[];
   /** The Emscripten module underneath, for tools and tests. */
   readonly module: unknown;
 }

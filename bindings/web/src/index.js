@@ -31,6 +31,21 @@ export class Verve {
     if (v.major !== BINDING_MAJOR_VERSION) {
       throw new VerveError(`verve: the wasm module is version ${v.text}, this binding speaks to ${BINDING_MAJOR_VERSION}.x`, 5);
     }
+    // libverve's log hook, a queue that takeWarnings() empties: installed before any agent exists
+    // (libverve refuses hooks while it holds memory; a fresh module holds none).
+    if (!this.rt.m._verve_web_install_warnings()) {
+      throw new VerveError(`verve: the warning hook could not be installed: ${this.rt.lastError()}`, 2);
+    }
+  }
+
+  /**
+   * libverve's warnings since the previous call, oldest first (usually none): a reward clamped to
+   * [-1, 1], an agent's RBF budget reached, each once per agent (also counted in agent.stats() as
+   * clampedRewards and rbfBudgetHits). At most 64 are kept between calls; a last entry counts the rest.
+   */
+  takeWarnings() {
+    const text = this.rt.m.UTF8ToString(this.rt.m._verve_web_take_warnings());
+    return text === '' ? [] : text.slice(0, -1).split('\n');
   }
 
   /** The library's version: {major, minor, patch, number, text}. */
