@@ -165,8 +165,8 @@ doc docs/platforms.md "objdump -T build/src/capi/libverve.so | grep -o 'GLIBC_[0
 in_doc docs/platforms.md 'cmake --preset mingw-release'
 in_doc docs/platforms.md 'cmake --build --preset mingw-release'
 in_doc docs/platforms.md 'ctest --preset mingw-release'
-# The Windows Lua module and the release bundle: test.sh runs the first; the bundle is on demand
-# (package.sh, as root: a Debian 11 root and every part's tests, minutes).
+# The Windows Lua module and the release bundle: test.sh runs both (the bundle last, package.sh as
+# root: a Debian 11 root and every part's tests, minutes), so here they are only found in the doc.
 in_doc docs/platforms.md './scripts/build_luajit_windows.sh'
 in_doc docs/platforms.md 'cmake --preset mingw-release -DVERVE_BUILD_LUA=ON -DVERVE_LUAJIT_DIR=$PWD/build/luajit-windows/src'
 in_doc docs/platforms.md "ctest --preset mingw-release -R '^lua\.'"

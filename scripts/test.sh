@@ -2,8 +2,10 @@
 # Checks that no tracked file names a package host, then sets up, builds and runs every test suite:
 # C++ core, learning, tasks, scenes, C ABI, Lua and the LÖVE game (CTest), the web build
 # (test_web.sh), the commands the docs give (check_docs.sh), the fuzz targets briefly, the Windows
-# build's C ABI and Lua suites under Wine, then the C# binding (dotnet test) against libverve.so.
-# The release bundle (Debian 11 build of the Linux library) is ./scripts/package.sh, on demand.
+# build's C ABI and Lua suites under Wine, then the C# binding (dotnet test) against libverve.so,
+# and last the release bundle (./scripts/package.sh: the Linux library built in a Debian 11 root,
+# every part tested where it will run). The bundle needs root (debootstrap, chroot); VERVE_NO_BUNDLE=1
+# leaves it out, saying so.
 set -euo pipefail
 cd "$(dirname "$0")/.."
 
@@ -70,3 +72,14 @@ if ! command -v dotnet >/dev/null 2>&1; then
   exit 1
 fi
 bindings/csharp/test.sh "$PWD/build/src/capi" "$PWD/build/mingw/bin"  # both runtimes in the packages
+
+echo "== the release bundle: dist/verve-<version>/, each part tested where it will run (scripts/package.sh)"
+if [ "${VERVE_NO_BUNDLE:-0}" = 1 ]; then
+  echo "test.sh: VERVE_NO_BUNDLE=1: the release bundle was NOT built or tested (./scripts/package.sh, as root)"
+elif [ "$(id -u)" -ne 0 ]; then
+  echo "test.sh: the release bundle needs root (a Debian 11 root: debootstrap, chroot); run test.sh as root," >&2
+  echo "or VERVE_NO_BUNDLE=1 ./scripts/test.sh to leave it out" >&2
+  exit 1
+else
+  ./scripts/package.sh
+fi
