@@ -181,7 +181,10 @@ typedef struct verve_agent_desc {
                                         as a 0.1 s decision (learning rates, trace decay) */
 #define VERVE_ADAPT_HABIT_BOUND 8u  /* with policy_weight_bound 0, actor weights stay at or below +10,
                                        so a habit a changed world makes wrong can be unlearned */
-#define VERVE_ADAPT_ALL 15u
+#define VERVE_ADAPT_FINE_LATTICE 16u /* one or two continuous sensors get a second RBF lattice at twice
+                                        the resolution beside the first (saves made without it keep
+                                        their one lattice) */
+#define VERVE_ADAPT_ALL 31u
 
 /* The sizes of verve_agent_desc a library accepts in struct_size: each release's full struct.
  * V1 ended after `seed` (no planning fields); V2 after discrete_prediction; V3 after

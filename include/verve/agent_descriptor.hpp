@@ -47,7 +47,12 @@ struct Adaptation {
     // With no policyWeightBound, actor weights stay at or below +10 (a sigmoid of 0.99995): a habit
     // a changed world makes wrong can be unlearned (core/habit_bound.hpp).
     static constexpr std::uint32_t HabitBound = 1u << 3;
-    static constexpr std::uint32_t All = Horizon | ActorScale | DecisionRate | HabitBound;
+    // One or two continuous sensors (one lattice) get a second lattice at twice the resolution,
+    // its features summed with the first's: wide RBFs learn the broad shape fast, narrow ones the
+    // detail a task needs (docs/algorithm.md, "A finer lattice"). Saves made without it keep
+    // their one lattice.
+    static constexpr std::uint32_t FineLattice = 1u << 4;
+    static constexpr std::uint32_t All = Horizon | ActorScale | DecisionRate | HabitBound | FineLattice;
 };
 
 // Bounds on every size an agent derives from its descriptor, so that no descriptor or save can ask

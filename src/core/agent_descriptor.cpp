@@ -2,8 +2,8 @@
 #include <cmath>
 #include <string>
 
+#include "core/fine_lattice.hpp"
 #include "core/predictive_model.hpp"
-#include "core/sensor_groups.hpp"
 #include "verve/agent.hpp"
 
 namespace verve {
@@ -74,12 +74,12 @@ std::uint64_t combinations(const AgentDescriptor& d) {
     return n;
 }
 
-// resolution^(sensors in the group) RBFs per group and discrete combination, summed (saturating).
+// resolution^(sensors in the lattice) RBFs per lattice and discrete combination, summed (saturating).
 std::uint64_t fullLatticeSize(const AgentDescriptor& d) {
     std::uint64_t total = 0;
-    for (auto group : core::sensorGroups(d)) {
+    for (const auto& lattice : core::lattices(d)) {
         std::uint64_t n = combinations(d);
-        for (auto bits = group; bits != 0 && n <= Limits::kMaxFullLattice; bits &= bits - 1) n *= d.resolution;
+        for (auto bits = lattice.sensors; bits != 0 && n <= Limits::kMaxFullLattice; bits &= bits - 1) n *= lattice.resolution;
         total += std::min(n, Limits::kMaxFullLattice + 1);
         if (total > Limits::kMaxFullLattice) return Limits::kMaxFullLattice + 1;
     }

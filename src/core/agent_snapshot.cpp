@@ -180,7 +180,7 @@ std::unique_ptr<Agent::Impl> restoreAgent(const AgentSnapshot& snap) {
 void snapshotBrain(const BrainState& brain, AgentSnapshot& snap) {
     snap.descriptor = brain.desc;
     // A save keeps the groups it was made with, whatever a later library's Auto would choose.
-    if (brain.desc.grouping == SensorGrouping::Auto && brain.rep.groupCount() > 1) {
+    if (brain.desc.grouping == SensorGrouping::Auto && core::sensorGroups(brain.desc).size() > 1) {
         snap.descriptor.grouping = SensorGrouping::Custom;
         snap.descriptor.sensorGroups = core::sensorGroups(brain.desc);
     }

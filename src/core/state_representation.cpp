@@ -2,6 +2,7 @@
 
 #include <array>
 
+#include "core/fine_lattice.hpp"
 #include "core/sensor_groups.hpp"
 #include "verve/error.hpp"
 
@@ -21,14 +22,16 @@ StateRepresentation::StateRepresentation(const AgentDescriptor& desc)
     if (numContinuous_ > LookupScratch::kMaxDims) throw Error(ErrorCode::InvalidArgument, "too many continuous sensors");
     for (std::uint32_t d = 0; d < numContinuous_; ++d) circular_[d] = desc.continuousSensors[d].circular ? 1 : 0;
     for (auto c : desc.discreteSensors) keyCount_ *= c;
-    const auto groups = sensorGroups(desc);
-    groups_.reserve(groups.size());
-    for (auto mask : groups) {
-        auto sensors = groupSensors(mask);
+    const auto specs = lattices(desc);
+    groups_.reserve(specs.size());
+    for (const auto& spec : specs) {
+        auto sensors = groupSensors(spec.sensors);
         const bool all = sensors.size() == numContinuous_;
         auto circular = circularOf(desc, sensors);
-        groups_.push_back(Group{std::move(sensors), all, RbfLattice(desc.discreteSensors, circular, desc.resolution)});
-        activationSum_ += groups_.back().lattice.activationSum();
+        groups_.push_back(Group{std::move(sensors), all, RbfLattice(desc.discreteSensors, circular, spec.resolution)});
+        // A fine lattice counts kFineActivationShare of its sum in the one the rates are divided by
+        // (core/fine_lattice.hpp).
+        activationSum_ += (spec.fine ? kFineActivationShare : 1.0f) * groups_.back().lattice.activationSum();
     }
     if (desc.allocation == RbfAllocation::Full) {
         for (auto& g : groups_) g.lattice.allocateFullLattice(featureCount_);

@@ -61,7 +61,8 @@ public:
     void addArraysTo(PrefetchQueue& q) const noexcept {
         if (groups_.size() == 1) groups_[0].lattice.addArraysTo(q);
     }
-    // Divides the learning rates: the expected activation sum, summed over the groups.
+    // Divides the learning rates: the expected activation sum, summed over the lattices (a fine
+    // one counts kFineActivationShare of its own: core/fine_lattice.hpp).
     float activationSum() const { return activationSum_; }
 
     // Restores a saved feature (a key below keyCount(), a centre of numContinuous values, both

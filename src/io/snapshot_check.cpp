@@ -5,6 +5,7 @@
 #include <string>
 
 #include "core/horizon.hpp"
+#include "core/fine_lattice.hpp"
 #include "core/sensor_groups.hpp"
 #include "verve/error.hpp"
 
@@ -70,14 +71,14 @@ void checkFeatures(const AgentSnapshot& s) {
         fail("the save holds " + std::to_string(features) + " RBFs, more than its max_rbfs allows (" +
              std::to_string(s.descriptor.rbfBudget()) + ")");
     }
-    // A feature's key: its group times the discrete combinations, plus its combination.
+    // A feature's key: its lattice times the discrete combinations, plus its combination.
     const std::uint64_t combos = discreteCombinations(s.descriptor);
-    const std::uint64_t keys = combos * core::sensorGroups(s.descriptor).size();  // <= 2^53 * 64
+    const std::uint64_t keys = combos * core::lattices(s.descriptor).size();  // <= 2^53 * 64
     for (std::size_t i = 0; i < features; ++i) {
         if (s.featureKeys[i] >= keys) {
             fail("featureKeys[" + std::to_string(i) + "] = " + std::to_string(s.featureKeys[i]) +
                  " is out of range (the descriptor has " + std::to_string(combos) +
-                 " discrete combinations in each of its sensor groups)");
+                 " discrete combinations in each of its RBF lattices)");
         }
     }
     requireSize("centres", s.centres.size(), features * nc, "features x continuous sensors");

@@ -199,9 +199,11 @@ TEST(Agent, ClampsAndWrapsContinuousValues) {
     o.continuous = {2.5f, 7.0f};  // circular 2.5 wraps to 0.5; 7 clamps to 1
     agent.update(0.0f, o, 0.1f);
     const AgentSnapshot snap = agent.snapshot();
-    ASSERT_EQ(snap.centres.size(), 2u);
-    EXPECT_FLOAT_EQ(snap.centres[0], 0.5f);
-    EXPECT_FLOAT_EQ(snap.centres[1], 1.0f);
+    ASSERT_EQ(snap.centres.size(), 4u);  // one RBF in the lattice, one in its fine lattice, both there
+    for (std::size_t f = 0; f < 2; ++f) {
+        EXPECT_FLOAT_EQ(snap.centres[2 * f], 0.5f);
+        EXPECT_FLOAT_EQ(snap.centres[2 * f + 1], 1.0f);
+    }
 }
 
 TEST(Agent, LearningOffActsButLearnsAndAllocatesNothing) {

@@ -13,10 +13,12 @@ using verve::core::StateRepresentation;
 
 namespace {
 
+// One lattice: these tests count its RBFs (the fine one beside it: fine_lattice_test.cpp).
 AgentDescriptor continuous1D(std::uint32_t resolution, bool circular = false) {
     AgentDescriptor d;
     d.addContinuousSensor(circular);
     d.resolution = resolution;
+    d.adaptation &= ~verve::Adaptation::FineLattice;
     return d;
 }
 

@@ -210,8 +210,14 @@ std::string asVersion(std::string bytes, const AgentSnapshot& snap, std::uint32_
     return bytes;
 }
 
+// Saves from before adaptation were made with one lattice over the sensors: an agent as then.
+AgentDescriptor beforeFineLattices(AgentDescriptor d) {
+    d.adaptation &= ~verve::Adaptation::FineLattice;
+    return d;
+}
+
 TEST(BinarySave, Version1SavesLoadWithTheWidestRewardRange) {
-    Agent agent = trainedAgent(iotest::plannerDescriptor(), 410);
+    Agent agent = trainedAgent(beforeFineLattices(iotest::plannerDescriptor()), 410);
     AgentSnapshot snap = agent.snapshot();
     ASSERT_LT(snap.rewardLow, 0.0f);  // a range narrower than [-1, 1], so the test can tell
     ASSERT_LT(snap.rewardHigh, 1.0f);
@@ -262,7 +268,7 @@ TEST(BinarySave, Version6SavesHaveOneActionSet) {
 }
 
 TEST(BinarySave, Version3SavesReadNoFinalRewardRange) {
-    Agent agent = trainedAgent(iotest::plannerDescriptor(), 410);
+    Agent agent = trainedAgent(beforeFineLattices(iotest::plannerDescriptor()), 410);
     AgentSnapshot snap = agent.snapshot();
     ASSERT_LT(snap.finalRewardLow, 0.0f);  // the test's trials end with rewards of both signs
     ASSERT_GT(snap.finalRewardHigh, 0.0f);
@@ -277,7 +283,7 @@ TEST(BinarySave, Version3SavesReadNoFinalRewardRange) {
 
 // A save from before the model predicted changes keeps its model's meaning: positions.
 TEST(BinarySave, Version2SavesKeepAModelThatPredictsPositions) {
-    Agent agent = trainedAgent(iotest::plannerDescriptor(), 410);
+    Agent agent = trainedAgent(beforeFineLattices(iotest::plannerDescriptor()), 410);
     AgentSnapshot snap = agent.snapshot();
     const std::string bytes = asVersion(binarySave(agent), snap, 2);
     ASSERT_FALSE(bytes.empty());

@@ -205,8 +205,9 @@ TEST_F(CorruptSave, SizesMustMatchTheDescriptor) {
 }
 
 TEST_F(CorruptSave, IndicesMustBeInRange) {
-    expectRefused(edited([](pugi::xml_node r) { setFirstNumber(r.child("features").child("keys"), "3"); }),
-                  ErrorCode::Format, "featureKeys[0] = 3 is out of range");
+    // 3 discrete combinations in each of 2 lattices (the sensors' and its fine one): keys 0-5.
+    expectRefused(edited([](pugi::xml_node r) { setFirstNumber(r.child("features").child("keys"), "6"); }),
+                  ErrorCode::Format, "featureKeys[0] = 6 is out of range");
     expectRefused(edited([](pugi::xml_node r) { setFirstNumber(r.child("features").child("centres"), "1.5"); }),
                   ErrorCode::Format, "centres[0]");
     expectRefused(edited([](pugi::xml_node r) { setFirstNumber(r.child("traces").child("features"), "999999"); }),

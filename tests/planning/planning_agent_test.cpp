@@ -38,10 +38,12 @@ std::uint32_t longestPlan(Agent& agent, Environment& env, std::uint64_t trials, 
     return longest;
 }
 
-// A planning agent of one continuous sensor and `actions` actions after one update at 0: one RBF,
-// nothing learned yet, no previous step. Tests write its model through the snapshot.
+// A planning agent of one continuous sensor and `actions` actions after one update at 0: one RBF
+// (one lattice, no fine one beside it), nothing learned yet, no previous step. Tests write its model
+// through the snapshot.
 AgentSnapshot oneRbfPlanner(std::uint32_t actions) {
     AgentDescriptor d;
+    d.adaptation &= ~verve::Adaptation::FineLattice;
     d.addContinuousSensor();
     d.numActions = actions;
     d.planning = true;

@@ -32,6 +32,7 @@ AgentDescriptor lineAgent() {
     d.numActions = 1;
     d.planning = true;
     d.resolution = 10;
+    d.adaptation &= ~verve::Adaptation::FineLattice;  // one lattice: the tests count and place its RBFs
     return d;
 }
 

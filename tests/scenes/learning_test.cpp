@@ -110,20 +110,23 @@ TEST(NpcArena, RejectsBadConfigurationsAndAgents) {
 }
 
 // One brain for 8 bodies against one brain each, on the same seeds (the same starts and food
-// draws): shared experience must pay per NPC-minute. Measured on seeds 1-3, minutes 1-4: food per
-// NPC-minute 1.03 with one brain each, 4.99 with one shared brain (4.9x); 10 seeds over 10 minutes
-// (verve-demo compare-brains): 1.92 vs 5.23. The threshold asks for 2x.
+// draws): shared experience must pay per NPC-minute. Whether a shared brain's run stops eating is
+// chaotic (about half of them do, which ones changes with any change to learning), so 10 seeds.
+// Measured, minutes 1-4, seeds 1-10: food per NPC-minute 1.18 with one brain each, 3.62 with one
+// shared brain (3.1x; 1.07 vs 4.67 before the fine lattice, when seeds 1-3 alone read 1.03 vs 4.99
+// and after it 1.36 vs 2.27); 30 seeds: 1.14 vs 3.52 (1.10 vs 3.51 before). The threshold asks for 2x.
 TEST(NpcArenaLearning, OneSharedBrainLearnsFasterThanOneBrainEach) {
+    constexpr std::uint64_t kSeeds = 10;
     double food[2] = {0.0, 0.0};
     for (int shared = 0; shared < 2; ++shared) {
-        for (std::uint64_t seed = 1; seed <= 3; ++seed) {
+        for (std::uint64_t seed = 1; seed <= kSeeds; ++seed) {
             NpcArenaConfig config;
             config.sharedBrain = shared == 1;
             NpcArena arena(config, seed);
-            food[shared] += arena.run(240.0).foodPerNpcMinute() / 3;
+            food[shared] += arena.run(240.0).foodPerNpcMinute() / kSeeds;
         }
     }
-    EXPECT_GT(food[1], 2.0 * food[0]) << "food per NPC-minute over minutes 1-4, mean of seeds 1-3: one brain each "
+    EXPECT_GT(food[1], 2.0 * food[0]) << "food per NPC-minute over minutes 1-4, mean of seeds 1-10: one brain each "
                                       << food[0] << ", one shared brain " << food[1];
 }
 

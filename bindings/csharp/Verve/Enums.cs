@@ -40,8 +40,11 @@ namespace Verve
         /// <summary>With <c>PolicyWeightBound</c> 0, actor weights stay at or below +10, so a habit a
         /// changed world makes wrong can be unlearned.</summary>
         HabitBound = 8,
+        /// <summary>One or two continuous sensors get a second RBF lattice at twice the resolution
+        /// beside the first: wide RBFs learn the broad shape fast, narrow ones the detail.</summary>
+        FineLattice = 16,
         /// <summary>All of them (the default).</summary>
-        All = Horizon | ActorScale | DecisionRate | HabitBound,
+        All = Horizon | ActorScale | DecisionRate | HabitBound | FineLattice,
     }
 
     /// <summary>Intrinsic reward added during planning (<c>verve_curiosity</c>).</summary>

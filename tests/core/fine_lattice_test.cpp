@@ -1,0 +1,79 @@
+// The fine lattice beside a small one (core/fine_lattice.hpp): which agents get it, how it adds
+// RBFs and counts in the learning rates (saves: tests/io/fine_lattice_save_test.cpp).
+#include "core/fine_lattice.hpp"
+
+#include <gtest/gtest.h>
+
+#include <vector>
+
+#include "core/sensor_groups.hpp"
+#include "core/state_representation.hpp"
+
+using namespace verve;
+using verve::core::ActiveFeature;
+using verve::core::StateRepresentation;
+
+namespace {
+
+AgentDescriptor sensors(std::size_t n) {
+    AgentDescriptor d;
+    for (std::size_t i = 0; i < n; ++i) d.addContinuousSensor();
+    return d;
+}
+
+AgentDescriptor withoutFineLattice(AgentDescriptor d) {
+    d.adaptation &= ~Adaptation::FineLattice;
+    return d;
+}
+
+}  // namespace
+
+TEST(FineLattice, OneOrTwoSensorsGetALatticeAtTwiceTheResolution) {
+    for (std::size_t n : {1u, 2u}) {
+        const auto specs = core::lattices(sensors(n));
+        ASSERT_EQ(specs.size(), 2u) << n;
+        EXPECT_EQ(specs[0].resolution, 10u);
+        EXPECT_FALSE(specs[0].fine);
+        EXPECT_EQ(specs[1].sensors, specs[0].sensors);
+        EXPECT_EQ(specs[1].resolution, 20u);
+        EXPECT_TRUE(specs[1].fine);
+    }
+}
+
+TEST(FineLattice, NoneForMoreSensorsGroupsNoSensorsOrWhenNotAsked) {
+    EXPECT_EQ(core::lattices(sensors(3)).size(), 1u);
+    EXPECT_EQ(core::lattices(sensors(4)).size(), 1u);
+    EXPECT_EQ(core::lattices(sensors(6)).size(), core::sensorGroups(sensors(6)).size());  // groups: none
+    AgentDescriptor discrete;
+    discrete.addDiscreteSensor(3);
+    EXPECT_EQ(core::lattices(discrete).size(), 1u);
+    EXPECT_EQ(core::lattices(withoutFineLattice(sensors(2))).size(), 1u);
+    AgentDescriptor custom = sensors(2);
+    custom.grouping = SensorGrouping::Custom;
+    custom.sensorGroups = {0b01, 0b10};
+    EXPECT_EQ(core::lattices(custom).size(), 2u);  // two lattices already: no fine ones
+    AgentDescriptor fine = sensors(1);
+    fine.resolution = DescriptorLimits::kMaxResolution;  // twice that is past the limit
+    EXPECT_EQ(core::lattices(fine).size(), 1u);
+    fine.resolution = DescriptorLimits::kMaxResolution / 2;
+    EXPECT_EQ(core::lattices(fine).back().resolution, DescriptorLimits::kMaxResolution);
+}
+
+TEST(FineLattice, AddsAnRbfOfItsOwnAndCountsHalfInTheLearningRates) {
+    AgentDescriptor d = sensors(1);
+    StateRepresentation rep(d);
+    StateRepresentation alone(withoutFineLattice(d));
+    EXPECT_FLOAT_EQ(rep.activationSum(), alone.activationSum() * (1.0f + core::kFineActivationShare));
+    std::vector<ActiveFeature> phi;
+    const float x = 0.3f;
+    EXPECT_EQ(rep.activate(nullptr, &x, true, phi), 2u);  // one in each lattice
+    // 0.15 is within one width (0.2) of the coarse RBF but not of the fine one (0.1).
+    const float near = 0.15f;
+    EXPECT_EQ(rep.activate(nullptr, &near, true, phi), 1u);
+    ASSERT_EQ(phi.size(), 3u);
+    std::vector<std::uint64_t> keys;
+    std::vector<float> centres;
+    rep.features(keys, centres);
+    EXPECT_EQ(keys, (std::vector<std::uint64_t>{0, 1, 1}));  // lattice 0, then the fine lattice 1
+    EXPECT_FLOAT_EQ(centres[2], 0.15f);
+}
