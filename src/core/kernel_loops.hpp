@@ -10,15 +10,26 @@
 
 namespace verve::core {
 
+// Which clamps trainDecayRows applies to each trained row (TraceStep): none; the discrete actor
+// columns, all of a trace's actor columns (the common bounded case: their count is known with S);
+// or any, as the step says.
+enum class RowClamp { None, Discrete, Any };
+
 // S trace components, known at compile time for the common action counts (0: s.traceStride).
 // Quad4::train(w, e, step, scale) does, for 4 components, w += step * e, then e *= scale.
-template <std::uint32_t S, typename Quad4>
+// The clamps as std::clamp computes them, min(max(w, low), high), written out: std::clamp
+// instantiated in the AVX2 file could be the copy the linker keeps for the whole library.
+template <std::uint32_t S, RowClamp Clamp, typename Quad4>
 std::uint32_t trainDecayRows(const TraceStep& s, float* __restrict weights, float* __restrict traces,
                              std::uint32_t* __restrict live, std::uint32_t count) {
     const std::uint32_t stride = S != 0 ? S : s.traceStride;
     const std::size_t weightStride = s.weightStride;
     const float* __restrict step = s.step;
     const float decay = s.decay, threshold = s.threshold;
+    const float low = s.low, high = s.high, bound = s.bound;
+    const std::uint32_t clamped = Clamp == RowClamp::Discrete ? stride - 1 : s.clampsDiscrete ? s.discreteColumns : 0;
+    const std::uint32_t boundedFrom = 1 + (Clamp == RowClamp::Discrete ? stride - 1 : s.discreteColumns);
+    const std::uint32_t boundedTo = boundedFrom + (Clamp == RowClamp::Discrete ? 0 : s.boundedColumns);
     std::uint32_t kept = 0;
     // The live rows lie scattered over the feature arrays, and in a crowd they are not in cache:
     // rows asked for kAhead features early arrive while this one trains (a 10,000-agent
@@ -44,24 +55,43 @@ std::uint32_t trainDecayRows(const TraceStep& s, float* __restrict weights, floa
             w[k] += step[k] * e[k];
             e[k] *= scale;
         }
+        if (Clamp != RowClamp::None) {
+            for (std::uint32_t a = 1; a <= clamped; ++a) {
+                const float raised = w[a] < low ? low : w[a];
+                w[a] = high < raised ? high : raised;
+            }
+            for (std::uint32_t j = boundedFrom; j < boundedTo; ++j) {
+                const float raised = w[j] < -bound ? -bound : w[j];
+                w[j] = bound < raised ? bound : raised;
+            }
+        }
         live[kept] = feature;
         kept += keep;
     }
     return kept;
 }
 
+template <RowClamp Clamp, typename Quad4>
+std::uint32_t trainDecayStride(const TraceStep& s, float* weights, float* traces, std::uint32_t* live,
+                               std::uint32_t count) {
+    switch (s.traceStride) {  // 1 + actions
+        case 3: return trainDecayRows<3, Clamp, Quad4>(s, weights, traces, live, count);
+        case 4: return trainDecayRows<4, Clamp, Quad4>(s, weights, traces, live, count);
+        case 5: return trainDecayRows<5, Clamp, Quad4>(s, weights, traces, live, count);
+        case 6: return trainDecayRows<6, Clamp, Quad4>(s, weights, traces, live, count);
+        case 9: return trainDecayRows<9, Clamp, Quad4>(s, weights, traces, live, count);
+        default: return trainDecayRows<0, Clamp, Quad4>(s, weights, traces, live, count);
+    }
+}
+
 // Kernels::trainDecay for a kernel set.
 template <typename Quad4>
 std::uint32_t trainDecay(const TraceStep& s, float* weights, float* traces, std::uint32_t* live,
                              std::uint32_t count) {
-    switch (s.traceStride) {  // 1 + actions
-        case 3: return trainDecayRows<3, Quad4>(s, weights, traces, live, count);
-        case 4: return trainDecayRows<4, Quad4>(s, weights, traces, live, count);
-        case 5: return trainDecayRows<5, Quad4>(s, weights, traces, live, count);
-        case 6: return trainDecayRows<6, Quad4>(s, weights, traces, live, count);
-        case 9: return trainDecayRows<9, Quad4>(s, weights, traces, live, count);
-        default: return trainDecayRows<0, Quad4>(s, weights, traces, live, count);
-    }
+    if (s.boundedColumns != 0) return trainDecayStride<RowClamp::Any, Quad4>(s, weights, traces, live, count);
+    if (!s.clampsDiscrete) return trainDecayStride<RowClamp::None, Quad4>(s, weights, traces, live, count);
+    if (s.discreteColumns + 1 == s.traceStride) return trainDecayStride<RowClamp::Discrete, Quad4>(s, weights, traces, live, count);
+    return trainDecayStride<RowClamp::Any, Quad4>(s, weights, traces, live, count);
 }
 
 }  // namespace verve::core

@@ -179,10 +179,10 @@ private:
     // eta * delta per trace component, into `step` (stride_ values), delta clamped as trainAndDecay
     // explains; returns whether the actor's range can be crossed (then the trained rows are clamped).
     bool stepFor(float delta, TdRates rates, float* step) const;
-    void clampPolicy(WeightTable& w, const std::uint32_t* rows, std::size_t count, PolicyRange range) const;
-    // The continuous columns' weights within +-ContinuousPolicy::kWeightBound: their traces have
-    // either sign, so any step can cross it.
-    void clampContinuous(WeightTable& w, const std::uint32_t* rows, std::size_t count) const;
+    // A trained row's actor weights back in range: the discrete columns' within `range` when the
+    // step was `bounded`, the continuous columns' always within +-ContinuousPolicy::kWeightBound
+    // (their traces have either sign, so any step can cross it). trainAndDecay's kernel does the same.
+    void clampRow(float* row, bool bounded, PolicyRange range) const;
     void grow(std::uint32_t featureCount);
     void reserveLive(std::size_t more);  // room for `more` live entries beyond liveCount_
     float* trace(std::uint32_t feature) { return traces_.data() + std::size_t(feature) * stride_; }
@@ -201,7 +201,6 @@ private:
     // no block of its own for it), else in step_.
     static constexpr std::uint32_t kStackStride = 16;
     std::vector<float> step_;
-    std::vector<std::uint32_t> trained_; // rows a bounded update trained (scratch)
     // Staged training: the live features by part (partStart_[p] .. partStart_[p + 1]), their
     // traces as they were (stride_ values each, in the same order), the step.
     std::vector<std::uint32_t> partStart_;

@@ -68,13 +68,14 @@ void TdLearner::trainPart(WeightTable& w, std::uint32_t part) const {
     if (!staged_ || part + 1 >= partStart_.size()) return;
     const float* step = stagedStep_.data();
     const std::uint32_t begin = partStart_[part], end = partStart_[part + 1];
+    // Each row clamped as soon as it is trained (no second pass over the scattered rows).
+    const bool clamps = stagedBounded_ || continuous_ != 0;
     for (std::uint32_t i = begin; i < end; ++i) {
         float* row = w.row(stagedLive_[i]);
         const float* e = stagedRows_.data() + std::size_t(i) * stride_;
         for (std::uint32_t c = 0; c < stride_; ++c) row[c] += step[c] * e[c];
+        if (clamps) clampRow(row, stagedBounded_, stagedRange_);
     }
-    if (stagedBounded_) clampPolicy(w, stagedLive_.data() + begin, end - begin, stagedRange_);
-    if (continuous_ != 0) clampContinuous(w, stagedLive_.data() + begin, end - begin);
 }
 
 std::uint32_t TdLearner::chooseActionStaged(const WeightTable& w, const std::vector<ActiveFeature>& phi, Rng& rng,
