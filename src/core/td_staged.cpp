@@ -1,6 +1,7 @@
 // TdLearner's staged training: trainAndDecay split so that the bodies of one brain can train its
 // weights on several threads at once, each thread owning a part of the features (shared_step.cpp).
 #include <algorithm>
+#include <type_traits>
 
 #include "core/continuous_actions.hpp"
 #include "core/prefetch.hpp"
@@ -17,11 +18,15 @@ void TdLearner::reserveStaged(std::uint32_t parts) {
     reserveRoom(stagedStep_, stride_);
 }
 
-void TdLearner::stage(float delta, TdRates rates, std::uint32_t parts) {
+void TdLearner::stage(float delta, TdRates rates) {
     // Room was reserved (reserveStaged, reserve): nothing here allocates.
     stagedStep_.resize(stride_);
     stagedBounded_ = stepFor(delta, rates, stagedStep_.data());
     stagedRange_ = rates.policyRange;
+    staged_ = true;
+}
+
+void TdLearner::keepAndDecay(float decay, std::uint32_t parts) {
     // A counting sort of the live features and their traces by part, each part in live-list order.
     partStart_.assign(std::size_t(parts) + 1, 0);
     for (std::uint32_t i = 0; i < liveCount_; ++i) ++partStart_[partOf(live_[i], parts) + 1];
@@ -29,53 +34,116 @@ void TdLearner::stage(float delta, TdRates rates, std::uint32_t parts) {
     stagedLive_.resize(liveCount_);
     stagedRows_.resize(std::size_t(liveCount_) * stride_);
     const std::size_t stride = stride_;
+    float* const traces = traces_.data();
     // The live rows lie scattered over the traces and a crowd's are not in cache: each is asked for
-    // 16 features ahead, as trainDecay's kernel does.
+    // 16 features ahead, as trainDecay's kernel does. Each row is copied as it was, then decayed
+    // as trainDecay's kernel decays it: a trace whose value component falls below the threshold is
+    // dropped (zeroed), the live list compacted in order.
     constexpr std::uint32_t kAhead = 16;
-    for (std::uint32_t i = 0; i < liveCount_; ++i) {
-        if (i + kAhead < liveCount_) {
-            prefetchLine(traces_.data() + std::size_t(live_[i + kAhead]) * stride);
-            prefetchLineForWrite(stagedRows_.data() + std::size_t(i + kAhead) * stride);
-        }
-        const std::uint32_t at = partStart_[partOf(live_[i], parts)]++;
-        stagedLive_[at] = live_[i];
-        const float* e = traces_.data() + std::size_t(live_[i]) * stride;
-        float* copy = stagedRows_.data() + std::size_t(at) * stride;
-        for (std::size_t c = 0; c < stride; ++c) copy[c] = e[c];  // a few floats: no call to memmove
-    }
-    for (std::uint32_t p = parts; p > 0; --p) partStart_[p] = partStart_[p - 1];
-    partStart_[0] = 0;
-    staged_ = true;
-}
-
-void TdLearner::decayStaged(float decay) {
-    // As trainDecay's kernel: a trace whose value component falls below the threshold is dropped
-    // (zeroed), the live list compacted in order.
     std::uint32_t kept = 0;
     for (std::uint32_t i = 0; i < liveCount_; ++i) {
         const std::uint32_t feature = live_[i];
-        float* e = traces_.data() + std::size_t(feature) * stride_;
+        if (i + kAhead < liveCount_) {
+            prefetchLineForWrite(traces + std::size_t(live_[i + kAhead]) * stride);
+            prefetchLineForWrite(stagedRows_.data() + std::size_t(i + kAhead) * stride);
+        }
+        const std::uint32_t at = partStart_[partOf(feature, parts)]++;
+        stagedLive_[at] = feature;
+        float* e = traces + std::size_t(feature) * stride;
+        float* copy = stagedRows_.data() + std::size_t(at) * stride;
         const bool keep = e[0] * decay >= threshold_;
         const float scale = keep ? decay : 0.0f;
-        for (std::uint32_t c = 0; c < stride_; ++c) e[c] *= scale;
+        for (std::size_t c = 0; c < stride; ++c) {  // a few floats: no call to memmove
+            copy[c] = e[c];
+            e[c] *= scale;
+        }
         live_[kept] = feature;
         kept += keep;
     }
     liveCount_ = kept;
+    for (std::uint32_t p = parts; p > 0; --p) partStart_[p] = partStart_[p - 1];
+    partStart_[0] = 0;
 }
+
+namespace {
+
+// The hot loops of the staged step, for S trace components known at compile time (0: any) and
+// one clamp or none, so that a row's few columns take no loop or branch of their own. The same
+// operations in the same order as the general form: the results are those of any S.
+struct StagedRows {
+    const float* step;
+    std::uint32_t stride;       // trace components (S, when S != 0)
+    std::uint32_t discrete;     // discrete actor columns, from 1 on
+    PolicyRange range;          // theirs, when bounded
+    std::uint32_t continuous;   // continuous actor columns after them, within +-kWeightBound
+};
+
+// A column's weight after its step: the discrete actor columns within the range when the step is
+// bounded, the continuous ones within +-kWeightBound.
+template <bool Bounded>
+VERVE_ALWAYS_INLINE float clampedColumn(const StagedRows& r, std::uint32_t c, float moved) {
+    if (c >= WeightLayout::kPolicy + r.discrete) {
+        return std::clamp(moved, -ContinuousPolicy::kWeightBound, ContinuousPolicy::kWeightBound);
+    }
+    if (Bounded && c >= WeightLayout::kPolicy) return r.range.clamp(moved);
+    return moved;
+}
+
+// trainPart's rows: each takes step * e, then its clamps.
+template <std::uint32_t S, bool Bounded>
+void trainRows(const StagedRows& r, WeightTable& w, const std::uint32_t* features, const float* rows, std::uint32_t count) {
+    const std::uint32_t stride = S != 0 ? S : r.stride;
+    for (std::uint32_t i = 0; i < count; ++i) {
+        float* row = w.row(features[i]);
+        const float* e = rows + std::size_t(i) * stride;
+        for (std::uint32_t c = 0; c < stride; ++c) row[c] = clampedColumn<Bounded>(r, c, row[c] + r.step[c] * e[c]);
+    }
+}
+
+// chooseActionStaged's correction: for each of the n features (strong: active at the trace
+// threshold), what its row's own step adds to the sums, when its trace is live.
+template <std::uint32_t S, bool Bounded>
+void addOwnStep(const StagedRows& r, const WeightTable& w, const float* traces, const ActiveFeature* strong, std::size_t n,
+                float* sums) {
+    const std::uint32_t stride = S != 0 ? S : r.stride;
+    for (std::size_t i = 0; i < n; ++i) {
+        const float* e = traces + std::size_t(strong[i].index) * stride;
+        const float* row = w.row(strong[i].index);
+        const float live = e[0] != 0.0f ? strong[i].activation : 0.0f;
+        for (std::uint32_t c = 0; c < stride; ++c) {
+            const float moved = clampedColumn<Bounded>(r, c, row[c] + r.step[c] * e[c]);
+            sums[c] += live * (moved - row[c]);
+        }
+    }
+}
+
+// Calls f.template operator()<S, Bounded>() with S the stride when it is a common one (else 0).
+template <typename F>
+void withStride(std::uint32_t stride, bool bounded, F&& f) {
+    const auto go = [&](auto s) {
+        if (bounded) f(std::integral_constant<std::uint32_t, decltype(s)::value>{}, std::true_type{});
+        else f(std::integral_constant<std::uint32_t, decltype(s)::value>{}, std::false_type{});
+    };
+    switch (stride) {
+        case 3: return go(std::integral_constant<std::uint32_t, 3>{});
+        case 4: return go(std::integral_constant<std::uint32_t, 4>{});
+        case 5: return go(std::integral_constant<std::uint32_t, 5>{});
+        case 6: return go(std::integral_constant<std::uint32_t, 6>{});
+        default: return go(std::integral_constant<std::uint32_t, 0>{});
+    }
+}
+
+}  // namespace
 
 void TdLearner::trainPart(WeightTable& w, std::uint32_t part) const {
     if (!staged_ || part + 1 >= partStart_.size()) return;
-    const float* step = stagedStep_.data();
     const std::uint32_t begin = partStart_[part], end = partStart_[part + 1];
     // Each row clamped as soon as it is trained (no second pass over the scattered rows).
-    const bool clamps = stagedBounded_ || continuous_ != 0;
-    for (std::uint32_t i = begin; i < end; ++i) {
-        float* row = w.row(stagedLive_[i]);
-        const float* e = stagedRows_.data() + std::size_t(i) * stride_;
-        for (std::uint32_t c = 0; c < stride_; ++c) row[c] += step[c] * e[c];
-        if (clamps) clampRow(row, stagedBounded_, stagedRange_);
-    }
+    const StagedRows r{stagedStep_.data(), stride_, columns_, stagedRange_, continuous_};
+    withStride(stride_, stagedBounded_, [&](auto s, auto bounded) {
+        trainRows<decltype(s)::value, decltype(bounded)::value>(r, w, stagedLive_.data() + begin,
+                                                                 stagedRows_.data() + std::size_t(begin) * stride_, end - begin);
+    });
 }
 
 std::uint32_t TdLearner::chooseActionStaged(const WeightTable& w, const std::vector<ActiveFeature>& phi, Rng& rng,
@@ -95,6 +163,7 @@ std::uint32_t TdLearner::chooseActionStaged(const WeightTable& w, const std::vec
         constexpr std::size_t kChunk = 64;
         ActiveFeature strong[kChunk];
         const std::size_t rows = traces_.size() / stride_;  // features made since the last mark have none
+        const StagedRows r{stagedStep_.data(), stride_, columns_, stagedRange_, continuous_};
         for (std::size_t from = 0; from < phi.size(); from += kChunk) {
             const std::size_t end = std::min(phi.size(), from + kChunk);
             std::size_t n = 0;
@@ -102,20 +171,9 @@ std::uint32_t TdLearner::chooseActionStaged(const WeightTable& w, const std::vec
                 strong[n] = phi[i];
                 n += phi[i].activation >= threshold_ && phi[i].index < rows;
             }
-            for (std::size_t i = 0; i < n; ++i) {
-                const float* e = traces_.data() + std::size_t(strong[i].index) * stride_;
-                const float* row = w.row(strong[i].index);
-                const float live = e[0] != 0.0f ? strong[i].activation : 0.0f;
-                for (std::uint32_t c = 0; c < stride_; ++c) {
-                    float moved = row[c] + stagedStep_[c] * e[c];
-                    if (c >= WeightLayout::kPolicy + columns_) {
-                        moved = std::clamp(moved, -ContinuousPolicy::kWeightBound, ContinuousPolicy::kWeightBound);
-                    } else if (c >= WeightLayout::kPolicy && stagedBounded_) {
-                        moved = stagedRange_.clamp(moved);
-                    }
-                    activations[c] += live * (moved - row[c]);
-                }
-            }
+            withStride(stride_, stagedBounded_, [&](auto s, auto bounded) {
+                addOwnStep<decltype(s)::value, decltype(bounded)::value>(r, w, traces_.data(), strong, n, activations.data());
+            });
         }
     }
     return chooseFromSums(rng, activations, value, nullptr, greedy, uniformAtOrBelow);
