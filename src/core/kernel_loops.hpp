@@ -10,6 +10,19 @@
 
 namespace verve::core {
 
+// Kernels::strongFeatures one feature at a time, branch-free, from phi[from] on with `written`
+// already out (the portable set; the AVX2 set's last few). A template of the set's own Quad4, as
+// the loops below.
+template <typename Quad4>
+std::size_t strongFeaturesFrom(const ActiveFeature* phi, std::size_t from, std::size_t n, float threshold,
+                               std::uint32_t below, ActiveFeature* out, std::size_t written) {
+    for (std::size_t i = from; i < n; ++i) {
+        out[written] = phi[i];
+        written += phi[i].activation >= threshold && phi[i].index < below;
+    }
+    return written;
+}
+
 // Which clamps trainDecayRows applies to each trained row (TraceStep): none; the discrete actor
 // columns, all of a trace's actor columns (the common bounded case: their count is known with S);
 // or any, as the step says.

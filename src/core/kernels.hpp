@@ -63,6 +63,10 @@ struct Kernels {
     // sums[k] = sum over phi of row(phi.index)[k] * phi.activation, for k < columns <= stride.
     void (*rowSums)(const float* weights, std::uint32_t stride, const ActiveFeature* phi, std::size_t n,
                     std::uint32_t columns, float* sums, PrefetchQueue* ahead);
+    // Writes the features of phi[0..n) active at `threshold` or more whose index is below `below`
+    // to `out` (room for n), in order, and returns how many: those that mark a trace.
+    std::size_t (*strongFeatures)(const ActiveFeature* phi, std::size_t n, float threshold, std::uint32_t below,
+                                  ActiveFeature* out);
     // For each live feature: w += step * e (then the row's clamps, TraceStep), then e *= decay;
     // drops (zeroes) the traces that fall below the threshold and compacts `live` in order.
     // Returns how many stay live.

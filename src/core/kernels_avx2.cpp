@@ -148,10 +148,56 @@ struct Quad4 {
     }
 };
 
+// For each 4-bit mask, the 32-bit lane numbers that left-pack its 64-bit elements (one
+// ActiveFeature each), and how many there are.
+struct PairPackTable {
+    std::uint32_t lanes[16][8];
+    std::uint8_t count[16];
+};
+constexpr PairPackTable makePairPackTable() {
+    PairPackTable t{};
+    for (std::uint32_t mask = 0; mask < 16; ++mask) {
+        std::uint32_t n = 0;
+        for (std::uint32_t p = 0; p < 4; ++p) {
+            if (mask & (1u << p)) {
+                t.lanes[mask][2 * n] = 2 * p;
+                t.lanes[mask][2 * n + 1] = 2 * p + 1;
+                ++n;
+            }
+        }
+        t.count[mask] = static_cast<std::uint8_t>(n);
+    }
+    return t;
+}
+constexpr PairPackTable kPairPack = makePairPackTable();
+
+// Four features per register ([index, activation] pairs): both tests, one mask per pair, then a
+// left-pack. Each store writes 4 features at out + written <= the first of them, so never past
+// out[n - 1].
+std::size_t strongFeatures(const ActiveFeature* phi, std::size_t n, float threshold, std::uint32_t below, ActiveFeature* out) {
+    static_assert(sizeof(ActiveFeature) == 8, "an [index, activation] pair");
+    const __m256 atLeast = _mm256_set1_ps(threshold);
+    const __m256i sign = _mm256_set1_epi32(INT32_MIN);  // unsigned order as signed: flip the top bit
+    const __m256i limit = _mm256_xor_si256(_mm256_set1_epi32(static_cast<int>(below)), sign);
+    std::size_t written = 0, i = 0;
+    for (; i + 4 <= n; i += 4) {
+        const __m256 pairs = _mm256_loadu_ps(reinterpret_cast<const float*>(phi + i));
+        const __m256i strong = _mm256_castps_si256(_mm256_cmp_ps(pairs, atLeast, _CMP_GE_OQ));  // odd lanes: activations
+        const __m256i inRange = _mm256_cmpgt_epi32(limit, _mm256_xor_si256(_mm256_castps_si256(pairs), sign));  // even: indices
+        // A pair's index test moved up to its activation's lane: the pair's sign bit is both tests.
+        const __m256i both = _mm256_and_si256(strong, _mm256_slli_epi64(inRange, 32));
+        const int mask = _mm256_movemask_pd(_mm256_castsi256_pd(both));
+        const __m256i perm = _mm256_loadu_si256(reinterpret_cast<const __m256i*>(kPairPack.lanes[mask]));
+        _mm256_storeu_ps(reinterpret_cast<float*>(out + written), _mm256_permutevar8x32_ps(pairs, perm));
+        written += kPairPack.count[mask];
+    }
+    return strongFeaturesFrom<Quad4>(phi, i, n, threshold, below, out, written);
+}
+
 }  // namespace
 
 const Kernels& avx2KernelTable() {
-    static const Kernels k{"avx2+fma", scan, boxesWithin, rowSums, trainDecay<Quad4>};
+    static const Kernels k{"avx2+fma", scan, boxesWithin, rowSums, strongFeatures, trainDecay<Quad4>};
     return k;
 }
 

@@ -98,10 +98,14 @@ struct Quad4 {
     }
 };
 
+std::size_t strongFeatures(const ActiveFeature* phi, std::size_t n, float threshold, std::uint32_t below, ActiveFeature* out) {
+    return strongFeaturesFrom<Quad4>(phi, 0, n, threshold, below, out, 0);
+}
+
 }  // namespace
 
 const Kernels& portableKernels() {
-    static const Kernels k{"portable", scan, boxesWithin, rowSums, trainDecay<Quad4>};
+    static const Kernels k{"portable", scan, boxesWithin, rowSums, strongFeatures, trainDecay<Quad4>};
     return k;
 }
 

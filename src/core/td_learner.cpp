@@ -168,19 +168,16 @@ void TdLearner::mark(const std::vector<ActiveFeature>& phi, std::uint32_t action
     column[0] = action;
     const std::uint32_t columns = branchCount_ == 1 ? 1 : branches_.columnsOf(action, column);
     // Below the threshold a trace would be dropped at the next decay anyway, and in a 4-sigma
-    // neighbourhood most features are below it: a sequential, branch-free filter first, so that
-    // only the features that mark anything touch the (randomly placed) trace rows.
+    // neighbourhood most features are below it: a sequential, branch-free filter first (4 features
+    // per instruction with AVX2, Kernels::strongFeatures), so that only the features that mark
+    // anything touch the (randomly placed) trace rows.
     // The filter writes to the stack, a chunk at a time: a buffer of the agent's own would be one
     // more cold block for every update of a crowd.
     constexpr std::size_t kChunk = 64;
     ActiveFeature strong[kChunk];
     for (std::size_t from = 0; from < phi.size(); from += kChunk) {
-        const std::size_t end = std::min(phi.size(), from + kChunk);
-        std::size_t n = 0;
-        for (std::size_t i = from; i < end; ++i) {
-            strong[n] = phi[i];
-            n += phi[i].activation >= threshold_;
-        }
+        const std::size_t n = kernels_->strongFeatures(phi.data() + from, std::min(kChunk, phi.size() - from), threshold_,
+                                                       UINT32_MAX, strong);
         reserveLive(std::min<std::size_t>(n, featureCount - liveCount_));  // at most that many become live
         // Locals, not members: a store to live_ may alias the member count as far as the compiler
         // knows, which then went through memory on every feature, one serial chain.

@@ -26,46 +26,43 @@ void TdLearner::stage(float delta, TdRates rates) {
     staged_ = true;
 }
 
-void TdLearner::keepAndDecay(float decay, std::uint32_t parts) {
-    // A counting sort of the live features and their traces by part, each part in live-list order.
-    partStart_.assign(std::size_t(parts) + 1, 0);
-    for (std::uint32_t i = 0; i < liveCount_; ++i) ++partStart_[partOf(live_[i], parts) + 1];
-    for (std::uint32_t p = 0; p < parts; ++p) partStart_[p + 1] += partStart_[p];
-    stagedLive_.resize(liveCount_);
-    stagedRows_.resize(std::size_t(liveCount_) * stride_);
-    const std::size_t stride = stride_;
-    float* const traces = traces_.data();
+namespace {
+
+// keepAndDecay's pass over the live rows, as trainDecay's kernel decays them: a trace whose value
+// component falls below the threshold is dropped (zeroed), the live list compacted in order. Each
+// row is copied as it was first, to its place in its part (`next`: each part's next place).
+// Locals only: a store through a member's pointer could change any member as far as the
+// compiler knows. Returns how many stay live.
+template <std::uint32_t S>
+std::uint32_t keepRows(std::uint32_t* __restrict live, std::uint32_t count, float* __restrict traces, std::uint32_t stride,
+                       std::uint32_t parts, std::uint32_t* __restrict next, std::uint32_t* __restrict keptFeatures,
+                       float* __restrict keptRows, float decay, float threshold) {
+    if (S != 0) stride = S;
     // The live rows lie scattered over the traces and a crowd's are not in cache: each is asked for
-    // 16 features ahead, as trainDecay's kernel does. Each row is copied as it was, then decayed
-    // as trainDecay's kernel decays it: a trace whose value component falls below the threshold is
-    // dropped (zeroed), the live list compacted in order.
+    // 16 features ahead, as trainDecay's kernel does.
     constexpr std::uint32_t kAhead = 16;
     std::uint32_t kept = 0;
-    for (std::uint32_t i = 0; i < liveCount_; ++i) {
-        const std::uint32_t feature = live_[i];
-        if (i + kAhead < liveCount_) {
-            prefetchLineForWrite(traces + std::size_t(live_[i + kAhead]) * stride);
-            prefetchLineForWrite(stagedRows_.data() + std::size_t(i + kAhead) * stride);
+    for (std::uint32_t i = 0; i < count; ++i) {
+        const std::uint32_t feature = live[i];
+        if (i + kAhead < count) {
+            prefetchLineForWrite(traces + std::size_t(live[i + kAhead]) * stride);
+            prefetchLineForWrite(keptRows + std::size_t(i + kAhead) * stride);
         }
-        const std::uint32_t at = partStart_[partOf(feature, parts)]++;
-        stagedLive_[at] = feature;
+        const std::uint32_t at = next[TdLearner::partOf(feature, parts)]++;
+        keptFeatures[at] = feature;
         float* e = traces + std::size_t(feature) * stride;
-        float* copy = stagedRows_.data() + std::size_t(at) * stride;
-        const bool keep = e[0] * decay >= threshold_;
+        float* copy = keptRows + std::size_t(at) * stride;
+        const bool keep = e[0] * decay >= threshold;
         const float scale = keep ? decay : 0.0f;
-        for (std::size_t c = 0; c < stride; ++c) {  // a few floats: no call to memmove
+        for (std::uint32_t c = 0; c < stride; ++c) {
             copy[c] = e[c];
             e[c] *= scale;
         }
-        live_[kept] = feature;
+        live[kept] = feature;
         kept += keep;
     }
-    liveCount_ = kept;
-    for (std::uint32_t p = parts; p > 0; --p) partStart_[p] = partStart_[p - 1];
-    partStart_[0] = 0;
+    return kept;
 }
-
-namespace {
 
 // The hot loops of the staged step, for S trace components known at compile time (0: any) and
 // one clamp or none, so that a row's few columns take no loop or branch of their own. The same
@@ -135,6 +132,28 @@ void withStride(std::uint32_t stride, bool bounded, F&& f) {
 
 }  // namespace
 
+void TdLearner::keepAndDecay(float decay, std::uint32_t parts) {
+    // A counting sort of the live features and their traces by part, each part in live-list order.
+    partStart_.assign(std::size_t(parts) + 1, 0);
+    for (std::uint32_t i = 0; i < liveCount_; ++i) ++partStart_[partOf(live_[i], parts) + 1];
+    for (std::uint32_t p = 0; p < parts; ++p) partStart_[p + 1] += partStart_[p];
+    stagedLive_.resize(liveCount_);
+    stagedRows_.resize(std::size_t(liveCount_) * stride_);
+    const auto keep = [&](auto s) {
+        return keepRows<decltype(s)::value>(live_.data(), liveCount_, traces_.data(), stride_, parts, partStart_.data(),
+                                            stagedLive_.data(), stagedRows_.data(), decay, threshold_);
+    };
+    switch (stride_) {
+        case 3: liveCount_ = keep(std::integral_constant<std::uint32_t, 3>{}); break;
+        case 4: liveCount_ = keep(std::integral_constant<std::uint32_t, 4>{}); break;
+        case 5: liveCount_ = keep(std::integral_constant<std::uint32_t, 5>{}); break;
+        case 6: liveCount_ = keep(std::integral_constant<std::uint32_t, 6>{}); break;
+        default: liveCount_ = keep(std::integral_constant<std::uint32_t, 0>{}); break;
+    }
+    for (std::uint32_t p = parts; p > 0; --p) partStart_[p] = partStart_[p - 1];
+    partStart_[0] = 0;
+}
+
 void TdLearner::trainPart(WeightTable& w, std::uint32_t part) const {
     if (!staged_ || part + 1 >= partStart_.size()) return;
     const std::uint32_t begin = partStart_[part], end = partStart_[part + 1];
@@ -162,15 +181,12 @@ std::uint32_t TdLearner::chooseActionStaged(const WeightTable& w, const std::vec
         // their misses overlap.
         constexpr std::size_t kChunk = 64;
         ActiveFeature strong[kChunk];
-        const std::size_t rows = traces_.size() / stride_;  // features made since the last mark have none
+        // Features made since the last mark have no trace row (a feature index fits in 32 bits).
+        const auto rows = static_cast<std::uint32_t>(traces_.size() / stride_);
         const StagedRows r{stagedStep_.data(), stride_, columns_, stagedRange_, continuous_};
         for (std::size_t from = 0; from < phi.size(); from += kChunk) {
-            const std::size_t end = std::min(phi.size(), from + kChunk);
-            std::size_t n = 0;
-            for (std::size_t i = from; i < end; ++i) {
-                strong[n] = phi[i];
-                n += phi[i].activation >= threshold_ && phi[i].index < rows;
-            }
+            const std::size_t n = kernels_->strongFeatures(phi.data() + from, std::min(kChunk, phi.size() - from), threshold_,
+                                                           rows, strong);
             withStride(stride_, stagedBounded_, [&](auto s, auto bounded) {
                 addOwnStep<decltype(s)::value, decltype(bounded)::value>(r, w, traces_.data(), strong, n, activations.data());
             });
