@@ -48,21 +48,28 @@ constexpr PackTable makePackTable() {
 }
 constexpr PackTable kPack = makePackTable();
 
-std::size_t scan(const ScanParams& p, const float* centres, const std::uint32_t* features, std::uint32_t firstFeature,
-                 std::size_t count, ActiveFeature* out, bool& nearOne) {
+// The scan over D dimensions, none of them circular, known at compile time (the input's
+// broadcasts then stay in registers); D 0: p.dims, any circular. The same operations in the same
+// order either way.
+template <std::uint32_t D>
+std::size_t scanBlocks(const ScanParams& p, const float* centres, const std::uint32_t* features, std::uint32_t firstFeature,
+                       std::size_t count, ActiveFeature* out, bool& nearOne) {
     static_assert(kScanLanes == 8, "one block is one AVX register");
+    const std::uint32_t dims = D != 0 ? D : p.dims;
     const __m256 cutoff2 = _mm256_set1_ps(p.cutoff2), width2 = _mm256_set1_ps(p.width2);
     const __m256 scale = _mm256_set1_ps(p.negInv2Sigma2);
     const __m256 one = _mm256_set1_ps(1.0f), minusOne = _mm256_set1_ps(-1.0f), two = _mm256_set1_ps(2.0f);
+    __m256 point[D != 0 ? D : 1];
+    for (std::uint32_t d = 0; d < D; ++d) point[d] = _mm256_set1_ps(p.point[d]);
     std::size_t n = 0;
     int near = 0;
     const float* block = centres;
     for (std::size_t first = 0; first < count; first += kScanLanes) {
         askAhead(p.ahead, kAheadPerBlock);
         __m256 d2 = _mm256_setzero_ps();
-        for (std::uint32_t d = 0; d < p.dims; ++d, block += kScanLanes) {
-            __m256 diff = _mm256_sub_ps(_mm256_set1_ps(p.point[d]), _mm256_loadu_ps(block));
-            if (p.circular[d]) {  // the shorter way round: -1 and 1 meet
+        for (std::uint32_t d = 0; d < dims; ++d, block += kScanLanes) {
+            __m256 diff = _mm256_sub_ps(D != 0 ? point[d] : _mm256_set1_ps(p.point[d]), _mm256_loadu_ps(block));
+            if (D == 0 && p.circular[d]) {  // the shorter way round: -1 and 1 meet
                 const __m256 down = _mm256_and_ps(_mm256_cmp_ps(diff, one, _CMP_GT_OQ), two);
                 const __m256 up = _mm256_and_ps(_mm256_cmp_ps(diff, minusOne, _CMP_LT_OQ), two);
                 diff = _mm256_add_ps(_mm256_sub_ps(diff, down), up);
@@ -97,6 +104,22 @@ std::size_t scan(const ScanParams& p, const float* centres, const std::uint32_t*
     return n;
 }
 
+std::size_t scan(const ScanParams& p, const float* centres, const std::uint32_t* features, std::uint32_t firstFeature,
+                 std::size_t count, ActiveFeature* out, bool& nearOne) {
+    bool circular = false;
+    for (std::uint32_t d = 0; d < p.dims; ++d) circular |= p.circular[d] != 0;
+    if (!circular) {
+        switch (p.dims) {
+            case 1: return scanBlocks<1>(p, centres, features, firstFeature, count, out, nearOne);
+            case 2: return scanBlocks<2>(p, centres, features, firstFeature, count, out, nearOne);
+            case 3: return scanBlocks<3>(p, centres, features, firstFeature, count, out, nearOne);
+            case 4: return scanBlocks<4>(p, centres, features, firstFeature, count, out, nearOne);
+            default: break;
+        }
+    }
+    return scanBlocks<0>(p, centres, features, firstFeature, count, out, nearOne);
+}
+
 void boxesWithin(const ScanParams& p, const float* boxes, std::size_t count, float reach2, std::uint8_t* masks) {
     const __m256 zero = _mm256_setzero_ps(), two = _mm256_set1_ps(2.0f), reach = _mm256_set1_ps(reach2);
     for (std::size_t first = 0; first < count; first += kScanLanes, ++masks) {
@@ -117,6 +140,25 @@ void boxesWithin(const ScanParams& p, const float* boxes, std::size_t count, flo
 
 void rowSums(const float* weights, std::uint32_t stride, const ActiveFeature* phi, std::size_t n,
              std::uint32_t columns, float* sums, PrefetchQueue* ahead) {
+    if (columns == 1) {
+        // One column (a value): the same four chains as below in scalar registers, with no mask
+        // to load through. Lane 0 of the 8-wide sums, bit for bit.
+        __m128 acc[4] = {_mm_setzero_ps(), _mm_setzero_ps(), _mm_setzero_ps(), _mm_setzero_ps()};
+        std::size_t i = 0;
+        for (; i + 4 <= n; i += 4) {
+            askAhead(ahead, kAheadPerBlock);
+            for (std::size_t j = 0; j < 4; ++j) {
+                const __m128 w = _mm_load_ss(weights + std::size_t(phi[i + j].index) * stride);
+                acc[j] = _mm_fmadd_ss(w, _mm_set_ss(phi[i + j].activation), acc[j]);
+            }
+        }
+        for (; i < n; ++i) {
+            const __m128 w = _mm_load_ss(weights + std::size_t(phi[i].index) * stride);
+            acc[0] = _mm_fmadd_ss(w, _mm_set_ss(phi[i].activation), acc[0]);
+        }
+        _mm_store_ss(sums, _mm_add_ss(_mm_add_ss(acc[0], acc[1]), _mm_add_ss(acc[2], acc[3])));
+        return;
+    }
     const __m256i laneNumbers = _mm256_setr_epi32(0, 1, 2, 3, 4, 5, 6, 7);
     for (std::uint32_t c = 0; c < columns; c += 8) {
         // Up to 8 columns per pass; a masked load never reads past a row's last column.
