@@ -43,6 +43,17 @@ std::uint32_t trainDecayRows(const TraceStep& s, float* __restrict weights, floa
     const std::uint32_t clamped = Clamp == RowClamp::Discrete ? stride - 1 : s.clampsDiscrete ? s.discreteColumns : 0;
     const std::uint32_t boundedFrom = 1 + (Clamp == RowClamp::Discrete ? stride - 1 : s.discreteColumns);
     const std::uint32_t boundedTo = boundedFrom + (Clamp == RowClamp::Discrete ? 0 : s.boundedColumns);
+    // Discrete clamps with S known: per component bounds, the value's unbounded (a clamp to
+    // [-inf, inf] leaves any value as it is), so that Quad4 clamps 4 components at once.
+    constexpr bool quadClamps = Clamp == RowClamp::Discrete && S != 0;
+    constexpr float kInfinity = __builtin_inff();
+    float lo[S != 0 ? S : 1], hi[S != 0 ? S : 1];
+    if (quadClamps) {
+        for (std::uint32_t k = 0; k < stride; ++k) {
+            lo[k] = k == 0 ? -kInfinity : low;
+            hi[k] = k == 0 ? kInfinity : high;
+        }
+    }
     std::uint32_t kept = 0;
     // The live rows lie scattered over the feature arrays, and in a crowd they are not in cache:
     // rows asked for kAhead features early arrive while this one trains (a 10,000-agent
@@ -63,6 +74,18 @@ std::uint32_t trainDecayRows(const TraceStep& s, float* __restrict weights, floa
         const bool keep = e[0] * decay >= threshold;
         const float scale = keep ? decay : 0.0f;
         std::uint32_t k = 0;
+        if (quadClamps) {
+            for (; k + 4 <= stride; k += 4) Quad4::trainClamped(w + k, e + k, step + k, scale, lo + k, hi + k);
+            for (; k < stride; ++k) {
+                const float moved = w[k] + step[k] * e[k];
+                const float raised = moved < lo[k] ? lo[k] : moved;
+                w[k] = hi[k] < raised ? hi[k] : raised;
+                e[k] *= scale;
+            }
+            live[kept] = feature;
+            kept += keep;
+            continue;
+        }
         for (; k + 4 <= stride; k += 4) Quad4::train(w + k, e + k, step + k, scale);
         for (; k < stride; ++k) {
             w[k] += step[k] * e[k];

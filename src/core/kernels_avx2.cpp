@@ -188,6 +188,14 @@ struct Quad4 {
         _mm_storeu_ps(w, _mm_fmadd_ps(_mm_loadu_ps(step), ek, _mm_loadu_ps(w)));
         _mm_storeu_ps(e, _mm_mul_ps(ek, _mm_set1_ps(scale)));
     }
+    // The same, each weight then within [lo, hi] as std::clamp puts it, min(max(w, lo), hi):
+    // max(lo, w) is lo > w ? lo : w, and min(hi, t) is hi < t ? hi : t, as std::max and std::min.
+    static void trainClamped(float* w, float* e, const float* step, float scale, const float* lo, const float* hi) {
+        const __m128 ek = _mm_loadu_ps(e);
+        const __m128 moved = _mm_fmadd_ps(_mm_loadu_ps(step), ek, _mm_loadu_ps(w));
+        _mm_storeu_ps(w, _mm_min_ps(_mm_loadu_ps(hi), _mm_max_ps(_mm_loadu_ps(lo), moved)));
+        _mm_storeu_ps(e, _mm_mul_ps(ek, _mm_set1_ps(scale)));
+    }
 };
 
 // For each 4-bit mask, the 32-bit lane numbers that left-pack its 64-bit elements (one
