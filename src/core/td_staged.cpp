@@ -1,6 +1,9 @@
 // TdLearner's staged training: trainAndDecay split so that the bodies of one brain can train its
 // weights on several threads at once, each thread owning a part of the features (shared_step.cpp).
+#include <Eigen/Core>
+
 #include <algorithm>
+#include <limits>
 #include <type_traits>
 
 #include "core/continuous_actions.hpp"
@@ -54,7 +57,15 @@ std::uint32_t keepRows(std::uint32_t* __restrict live, std::uint32_t count, floa
         float* copy = keptRows + std::size_t(at) * stride;
         const bool keep = e[0] * decay >= threshold;
         const float scale = keep ? decay : 0.0f;
-        for (std::uint32_t c = 0; c < stride; ++c) {
+        std::uint32_t c = 0;
+        if constexpr (S != 0) {
+            for (; c + 4 <= S; c += 4) {
+                Eigen::Map<Eigen::Array4f> x(e + c);
+                Eigen::Map<Eigen::Array4f>(copy + c) = x;
+                x *= scale;
+            }
+        }
+        for (; c < stride; ++c) {
             copy[c] = e[c];
             e[c] *= scale;
         }
@@ -86,31 +97,96 @@ VERVE_ALWAYS_INLINE float clampedColumn(const StagedRows& r, std::uint32_t c, fl
     return moved;
 }
 
-// trainPart's rows: each takes step * e, then its clamps.
+// A column's bounds as clampedColumn applies them, for S columns known at compile time: the
+// value's and an unbounded step's actor columns [-inf, inf], which leaves any weight as it is.
+template <std::uint32_t S, bool Bounded>
+struct ColumnBounds {
+    float lo[S], hi[S];
+    explicit ColumnBounds(const StagedRows& r) {
+        constexpr float inf = std::numeric_limits<float>::infinity();
+        for (std::uint32_t c = 0; c < S; ++c) {
+            const bool continuous = c >= WeightLayout::kPolicy + r.discrete;
+            const bool bounded = Bounded && c >= WeightLayout::kPolicy;
+            lo[c] = continuous ? -ContinuousPolicy::kWeightBound : bounded ? r.range.low : -inf;
+            hi[c] = continuous ? ContinuousPolicy::kWeightBound : bounded ? r.range.high : inf;
+        }
+    }
+};
+
+// std::clamp's min(max(x, lo), hi), per lane: as clampedColumn, bit for bit.
+using Quad = Eigen::Array4f;
+VERVE_ALWAYS_INLINE Quad clampQuad(const Quad& x, const Quad& lo, const Quad& hi) {
+    const Quad raised = (x < lo).select(lo, x);
+    return (hi < raised).select(hi, raised);
+}
+VERVE_ALWAYS_INLINE float clampOne(float x, float lo, float hi) {
+    const float raised = x < lo ? lo : x;
+    return hi < raised ? hi : raised;
+}
+
+// trainPart's rows: each takes step * e, then its clamps. With S known, the columns unrolled
+// (the same multiply, add and clamp per column) and the table's base and stride in registers.
 template <std::uint32_t S, bool Bounded>
 void trainRows(const StagedRows& r, WeightTable& w, const std::uint32_t* features, const float* rows, std::uint32_t count) {
-    const std::uint32_t stride = S != 0 ? S : r.stride;
-    for (std::uint32_t i = 0; i < count; ++i) {
-        float* row = w.row(features[i]);
-        const float* e = rows + std::size_t(i) * stride;
-        for (std::uint32_t c = 0; c < stride; ++c) row[c] = clampedColumn<Bounded>(r, c, row[c] + r.step[c] * e[c]);
+    if constexpr (S == 0) {
+        for (std::uint32_t i = 0; i < count; ++i) {
+            float* row = w.row(features[i]);
+            const float* e = rows + std::size_t(i) * r.stride;
+            for (std::uint32_t c = 0; c < r.stride; ++c) row[c] = clampedColumn<Bounded>(r, c, row[c] + r.step[c] * e[c]);
+        }
+    } else {
+        const ColumnBounds<S, Bounded> b(r);
+        float step[S];
+        for (std::uint32_t c = 0; c < S; ++c) step[c] = r.step[c];
+        float* const weights = w.data().data();
+        const std::size_t stride = w.stride();
+        for (std::uint32_t i = 0; i < count; ++i) {
+            float* row = weights + features[i] * stride;
+            const float* e = rows + std::size_t(i) * S;
+            for (std::uint32_t c = 0; c < S; ++c) row[c] = clampOne(row[c] + step[c] * e[c], b.lo[c], b.hi[c]);
+        }
     }
 }
 
 // chooseActionStaged's correction: for each of the n features (strong: active at the trace
-// threshold), what its row's own step adds to the sums, when its trace is live.
+// threshold), what its row's own step adds to the sums, when its trace is live. With S known, 4
+// columns at a time, summed in registers (each column's sum in feature order, as the general form).
 template <std::uint32_t S, bool Bounded>
 void addOwnStep(const StagedRows& r, const WeightTable& w, const float* traces, const ActiveFeature* strong, std::size_t n,
                 float* sums) {
-    const std::uint32_t stride = S != 0 ? S : r.stride;
-    for (std::size_t i = 0; i < n; ++i) {
-        const float* e = traces + std::size_t(strong[i].index) * stride;
-        const float* row = w.row(strong[i].index);
-        const float live = e[0] != 0.0f ? strong[i].activation : 0.0f;
-        for (std::uint32_t c = 0; c < stride; ++c) {
-            const float moved = clampedColumn<Bounded>(r, c, row[c] + r.step[c] * e[c]);
-            sums[c] += live * (moved - row[c]);
+    if constexpr (S == 0) {
+        for (std::size_t i = 0; i < n; ++i) {
+            const float* e = traces + std::size_t(strong[i].index) * r.stride;
+            const float* row = w.row(strong[i].index);
+            const float live = e[0] != 0.0f ? strong[i].activation : 0.0f;
+            for (std::uint32_t c = 0; c < r.stride; ++c) {
+                const float moved = clampedColumn<Bounded>(r, c, row[c] + r.step[c] * e[c]);
+                sums[c] += live * (moved - row[c]);
+            }
         }
+    } else {
+        const ColumnBounds<S, Bounded> b(r);
+        constexpr std::uint32_t kQuads = S / 4;
+        Quad quads[kQuads > 0 ? kQuads : 1];
+        float rest[S % 4 > 0 ? S % 4 : 1];
+        for (std::uint32_t q = 0; q < kQuads; ++q) quads[q] = Eigen::Map<const Quad>(sums + 4 * q);
+        for (std::uint32_t c = 4 * kQuads; c < S; ++c) rest[c - 4 * kQuads] = sums[c];
+        for (std::size_t i = 0; i < n; ++i) {
+            const float* e = traces + std::size_t(strong[i].index) * S;
+            const float* row = w.row(strong[i].index);
+            const float live = e[0] != 0.0f ? strong[i].activation : 0.0f;
+            for (std::uint32_t q = 0; q < kQuads; ++q) {
+                const Eigen::Map<const Quad> x(row + 4 * q);
+                const Quad moved = clampQuad(x + Eigen::Map<const Quad>(r.step + 4 * q) * Eigen::Map<const Quad>(e + 4 * q),
+                                             Eigen::Map<const Quad>(b.lo + 4 * q), Eigen::Map<const Quad>(b.hi + 4 * q));
+                quads[q] += live * (moved - x);
+            }
+            for (std::uint32_t c = 4 * kQuads; c < S; ++c) {
+                rest[c - 4 * kQuads] += live * (clampOne(row[c] + r.step[c] * e[c], b.lo[c], b.hi[c]) - row[c]);
+            }
+        }
+        for (std::uint32_t q = 0; q < kQuads; ++q) Eigen::Map<Quad>(sums + 4 * q) = quads[q];
+        for (std::uint32_t c = 4 * kQuads; c < S; ++c) sums[c] = rest[c - 4 * kQuads];
     }
 }
 
