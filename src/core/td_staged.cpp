@@ -210,8 +210,13 @@ void withStride(std::uint32_t stride, bool bounded, F&& f) {
 
 void TdLearner::keepAndDecay(float decay, std::uint32_t parts) {
     // A counting sort of the live features and their traces by part, each part in live-list order.
+    // (Locals: a store to the counts could change liveCount_ as far as the compiler knows.)
     partStart_.assign(std::size_t(parts) + 1, 0);
-    for (std::uint32_t i = 0; i < liveCount_; ++i) ++partStart_[partOf(live_[i], parts) + 1];
+    std::uint32_t* const counts = partStart_.data() + 1;
+    const std::uint32_t* const live = live_.data();
+    const std::uint32_t count = liveCount_;
+    if (parts == 1) counts[0] = count;
+    else for (std::uint32_t i = 0; i < count; ++i) ++counts[partOf(live[i], parts)];
     for (std::uint32_t p = 0; p < parts; ++p) partStart_[p + 1] += partStart_[p];
     stagedLive_.resize(liveCount_);
     stagedRows_.resize(std::size_t(liveCount_) * stride_);
