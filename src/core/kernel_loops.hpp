@@ -46,7 +46,7 @@ std::uint32_t trainDecayRows(const TraceStep& s, float* __restrict weights, floa
     // Discrete clamps with S known: per component bounds, the value's unbounded (a clamp to
     // [-inf, inf] leaves any value as it is), so that Quad4 clamps 4 components at once.
     constexpr bool quadClamps = Clamp == RowClamp::Discrete && S != 0;
-    constexpr float kInfinity = __builtin_inff();
+    constexpr float kInfinity = __builtin_inff();  // not numeric_limits: no shared inline function here
     float lo[S != 0 ? S : 1], hi[S != 0 ? S : 1];
     if (quadClamps) {
         for (std::uint32_t k = 0; k < stride; ++k) {
