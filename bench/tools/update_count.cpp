@@ -7,6 +7,8 @@
 // frames of warm-up, 20 counted), for the cache simulation's misses per update:
 //   valgrind --tool=callgrind --cache-sim=yes --LL=4194304,16,64 --toggle-collect='*measuredFrames*' \
 //     build/bench/verve_update_count crowd-cart-pole
+// brain-cart-pole: the same crowd as 1,000 bodies of one brain, each frame one batch call on one
+// thread (the parallel phases of core/shared_step.cpp), counted the same way.
 #include <cstdio>
 #include <cstdlib>
 #include <cstring>
@@ -16,6 +18,8 @@
 
 #include "bench_shapes.hpp"
 #include "crowd_path.hpp"
+#include "verve/batch.hpp"
+#include "verve/brain.hpp"
 
 namespace {
 
@@ -50,8 +54,38 @@ struct Crowd {
         actions_.assign(n, 0);
         obs_ = verve::Observation(d);
     }
+    // One brain for n bodies, stepped through a batch of one thread.
+    void shareOneBrain(std::uint32_t n) {
+        brain_ = std::make_unique<verve::Brain>(agents_.front()->snapshot());
+        agents_.clear();
+        for (std::uint32_t i = 0; i < n; ++i) agents_.push_back(std::make_unique<verve::Agent>(brain_->makeBody()));
+        actions_.assign(n, 0);
+        verve::BatchOptions options;
+        options.workerCount = 1;
+        batch_ = std::make_unique<verve::Batch>(options);
+    }
     void frame() {
         ++step_;
+        if (batch_) {
+            rewards_.resize(agents_.size());
+            inputs_.resize(agents_.size() * sensors_);
+            pointers_.clear();
+            for (std::size_t i = 0; i < agents_.size(); ++i) {
+                verve::bench::crowdFrame(sensors_, step_ + 97 * i, inputs_.data() + i * sensors_);
+                rewards_[i] = actions_[i] == 0 ? 0.1f : -0.1f;
+                pointers_.push_back(agents_[i].get());
+            }
+            verve::BatchStep s;
+            s.agents = pointers_.data();
+            s.count = pointers_.size();
+            s.rewards = rewards_.data();
+            s.continuous = inputs_.data();
+            s.continuousTotal = inputs_.size();
+            s.dt = 1.0f / 60;
+            s.actions = actions_.data();
+            batch_->update(s);
+            return;
+        }
         for (std::size_t i = 0; i < agents_.size(); ++i) {
             verve::bench::crowdFrame(sensors_, step_ + 97 * i, obs_.continuous.data());
             actions_[i] = agents_[i]->update(actions_[i] == 0 ? 0.1f : -0.1f, obs_, 1.0f / 60);
@@ -62,6 +96,10 @@ struct Crowd {
     std::vector<std::unique_ptr<verve::Agent>> agents_;
     std::vector<std::uint32_t> actions_;
     verve::Observation obs_;
+    std::unique_ptr<verve::Brain> brain_;  // brain-cart-pole: the bodies' brain and their batch
+    std::unique_ptr<verve::Batch> batch_;
+    std::vector<verve::Agent*> pointers_;
+    std::vector<float> rewards_, inputs_;
 };
 
 // Not inlined, so that callgrind collects exactly these frames.
@@ -73,9 +111,10 @@ __attribute__((noinline)) void measuredFrames(Crowd& crowd, int count) {
 
 int main(int argc, char** argv) {
     const std::string shape = argc > 1 ? argv[1] : "";
-    if (shape == "crowd-cart-pole" || shape == "crowd-tiny") {
-        const bool tiny = shape == "crowd-tiny";
-        Crowd crowd(tiny ? 2 : 4, tiny ? 2 : 3, tiny ? 0 : 676, tiny ? 3000 : 300);
+    if (shape == "crowd-cart-pole" || shape == "crowd-tiny" || shape == "brain-cart-pole") {
+        const bool tiny = shape == "crowd-tiny", brain = shape == "brain-cart-pole";
+        Crowd crowd(tiny ? 2 : 4, tiny ? 2 : 3, tiny ? 0 : 676, tiny ? 3000 : brain ? 1 : 300);
+        if (brain) crowd.shareOneBrain(1000);
         for (int i = 0; i < 10; ++i) crowd.frame();
         measuredFrames(crowd, 20);
         std::printf("%s: %zu agents x 20 frames = %zu updates counted\n", shape.c_str(), crowd.agents_.size(),
@@ -101,6 +140,6 @@ int main(int argc, char** argv) {
         return 0;
     }
     std::fprintf(stderr, "usage: verve_update_count cart-pole | dense-4d-R | dense-2d-R (R: resolution, at most 40 in 4-D, 400 in "
-                         "2-D) | crowd-cart-pole | crowd-tiny\n");
+                         "2-D) | crowd-cart-pole | crowd-tiny | brain-cart-pole\n");
     return 2;
 }

@@ -37,6 +37,15 @@ struct TraceStep {
     float decay = 0.0f;
     float threshold = 0.0f;  // a trace whose value component falls below it is dropped
     PrefetchQueue* ahead = nullptr;  // as in ScanParams
+    // Each trained row's actor weights kept in range as soon as it is trained (while in cache, and
+    // no second pass over the scattered rows): when `clampsDiscrete`, the `discreteColumns` columns
+    // from 1 on within [low, high]; always the `boundedColumns` continuous ones after them within
+    // +-bound.
+    bool clampsDiscrete = false;
+    std::uint32_t discreteColumns = 0;
+    float low = 0.0f, high = 0.0f;
+    std::uint32_t boundedColumns = 0;
+    float bound = 0.0f;
 };
 
 struct Kernels {
@@ -54,8 +63,13 @@ struct Kernels {
     // sums[k] = sum over phi of row(phi.index)[k] * phi.activation, for k < columns <= stride.
     void (*rowSums)(const float* weights, std::uint32_t stride, const ActiveFeature* phi, std::size_t n,
                     std::uint32_t columns, float* sums, PrefetchQueue* ahead);
-    // For each live feature: w += step * e, then e *= decay; drops (zeroes) the traces that fall
-    // below the threshold and compacts `live` in order. Returns how many stay live.
+    // Writes the features of phi[0..n) active at `threshold` or more whose index is below `below`
+    // to `out` (room for n), in order, and returns how many: those that mark a trace.
+    std::size_t (*strongFeatures)(const ActiveFeature* phi, std::size_t n, float threshold, std::uint32_t below,
+                                  ActiveFeature* out);
+    // For each live feature: w += step * e (then the row's clamps, TraceStep), then e *= decay;
+    // drops (zeroes) the traces that fall below the threshold and compacts `live` in order.
+    // Returns how many stay live.
     std::uint32_t (*trainDecay)(const TraceStep& s, float* weights, float* traces, std::uint32_t* live,
                                 std::uint32_t count);
 };

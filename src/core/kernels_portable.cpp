@@ -96,12 +96,24 @@ struct Quad4 {
         Eigen::Map<Quad>(w) += Eigen::Map<const Quad>(step) * ek;
         ek *= scale;
     }
+    // The same, each weight then within [lo, hi] as std::clamp puts it: min(max(w, lo), hi).
+    static void trainClamped(float* w, float* e, const float* step, float scale, const float* lo, const float* hi) {
+        train(w, e, step, scale);
+        for (int j = 0; j < 4; ++j) {
+            const float raised = w[j] < lo[j] ? lo[j] : w[j];
+            w[j] = hi[j] < raised ? hi[j] : raised;
+        }
+    }
 };
+
+std::size_t strongFeatures(const ActiveFeature* phi, std::size_t n, float threshold, std::uint32_t below, ActiveFeature* out) {
+    return strongFeaturesFrom<Quad4>(phi, 0, n, threshold, below, out, 0);
+}
 
 }  // namespace
 
 const Kernels& portableKernels() {
-    static const Kernels k{"portable", scan, boxesWithin, rowSums, trainDecay<Quad4>};
+    static const Kernels k{"portable", scan, boxesWithin, rowSums, strongFeatures, trainDecay<Quad4>};
     return k;
 }
 

@@ -44,7 +44,7 @@ bool Agent::Impl::prepareShared(float reward, ObservationView obs, float dt, cor
     const bool learns = s.learning && s.hasPrevious && s.learnsFromRealSteps();
     if (learns) {
         const float delta = s.realTdError(r, k);
-        s.td.stage(delta, k.rates, parts);
+        s.td.stage(delta, k.rates);
         seen.seesDelta = k.traceDecay > 0.0f;  // as learnReal
         seen.delta = delta;
         s.stats.tdError = delta;
@@ -58,8 +58,9 @@ bool Agent::Impl::prepareShared(float reward, ObservationView obs, float dt, cor
                                                          !samples, hopeless);
     s.recordChoice(nullptr, hopeless, k);
     const float* gradients = s.actContinuous(!samples, dt);
-    // The traces are the body's own: they decay and take the new step's at once.
-    if (learns) s.td.decayStaged(k.traceDecay);
+    // The traces are the body's own: kept as they were for the brain's change, they decay and take
+    // the new step's at once.
+    if (learns) s.td.keepAndDecay(k.traceDecay, parts);
     if (s.learning && s.learnsFromRealSteps()) s.td.mark(s.current, action, s.rep.featureCount(), gradients);
     s.endStep(obs, dt, action);
     return true;

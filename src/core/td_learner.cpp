@@ -71,8 +71,6 @@ void TdLearner::reserve(std::uint32_t features, std::size_t active) {
     reserveRoom(traces_, std::size_t(features) * stride_);
     // At most `active` more traces become live (and one spare slot, reserveLive()).
     reserveRoom(live_, std::min<std::size_t>(liveCount_ + active, features) + 1);
-    // A bounded update copies the live list (every agent's is, with Adaptation::HabitBound).
-    reserveRoom(trained_, live_.capacity());
 }
 
 float TdLearner::value(const WeightTable& w, const std::vector<ActiveFeature>& phi, PrefetchQueue* ahead) const {
@@ -127,8 +125,6 @@ void TdLearner::trainAndDecay(WeightTable& w, float delta, TdRates rates, float 
     float onStack[kStackStride];
     float* step = stride_ <= kStackStride ? onStack : step_.data();
     const bool bounded = stepFor(delta, rates, step);
-    // Remember the rows first: the kernel drops some from the live list as it goes.
-    if (bounded || continuous_ != 0) trained_.assign(live_.begin(), live_.begin() + liveCount_);
     TraceStep s;
     s.step = step;
     s.traceStride = stride_;
@@ -136,24 +132,23 @@ void TdLearner::trainAndDecay(WeightTable& w, float delta, TdRates rates, float 
     s.decay = decay;
     s.threshold = threshold_;
     s.ahead = ahead;
+    // The kernel clamps each row as it trains it (clampPolicy and clampContinuous, row by row).
+    s.clampsDiscrete = bounded;
+    s.discreteColumns = columns_;
+    s.low = rates.policyRange.low;
+    s.high = rates.policyRange.high;
+    s.boundedColumns = continuous_;
+    s.bound = ContinuousPolicy::kWeightBound;
     liveCount_ = kernels_->trainDecay(s, w.data().data(), traces_.data(), live_.data(), liveCount_);
-    if (bounded) clampPolicy(w, trained_.data(), trained_.size(), rates.policyRange);
-    if (continuous_ != 0) clampContinuous(w, trained_.data(), trained_.size());
 }
 
-void TdLearner::clampContinuous(WeightTable& w, const std::uint32_t* rows, std::size_t count) const {
-    constexpr float bound = ContinuousPolicy::kWeightBound;
-    for (std::size_t i = 0; i < count; ++i) {
-        float* c = w.row(rows[i]) + WeightLayout::kPolicy + columns_;
-        for (std::uint32_t j = 0; j < continuous_; ++j) c[j] = std::clamp(c[j], -bound, bound);
-    }
-}
-
-void TdLearner::clampPolicy(WeightTable& w, const std::uint32_t* rows, std::size_t count, PolicyRange range) const {
-    for (std::size_t i = 0; i < count; ++i) {
-        float* policy = w.row(rows[i]) + WeightLayout::kPolicy;
+void TdLearner::clampRow(float* row, bool bounded, PolicyRange range) const {
+    float* policy = row + WeightLayout::kPolicy;
+    if (bounded) {
         for (std::uint32_t a = 0; a < columns_; ++a) policy[a] = range.clamp(policy[a]);
     }
+    constexpr float bound = ContinuousPolicy::kWeightBound;
+    for (std::uint32_t j = 0; j < continuous_; ++j) policy[columns_ + j] = std::clamp(policy[columns_ + j], -bound, bound);
 }
 
 void TdLearner::grow(std::uint32_t featureCount) {
@@ -173,19 +168,16 @@ void TdLearner::mark(const std::vector<ActiveFeature>& phi, std::uint32_t action
     column[0] = action;
     const std::uint32_t columns = branchCount_ == 1 ? 1 : branches_.columnsOf(action, column);
     // Below the threshold a trace would be dropped at the next decay anyway, and in a 4-sigma
-    // neighbourhood most features are below it: a sequential, branch-free filter first, so that
-    // only the features that mark anything touch the (randomly placed) trace rows.
+    // neighbourhood most features are below it: a sequential, branch-free filter first (4 features
+    // per instruction with AVX2, Kernels::strongFeatures), so that only the features that mark
+    // anything touch the (randomly placed) trace rows.
     // The filter writes to the stack, a chunk at a time: a buffer of the agent's own would be one
     // more cold block for every update of a crowd.
     constexpr std::size_t kChunk = 64;
     ActiveFeature strong[kChunk];
     for (std::size_t from = 0; from < phi.size(); from += kChunk) {
-        const std::size_t end = std::min(phi.size(), from + kChunk);
-        std::size_t n = 0;
-        for (std::size_t i = from; i < end; ++i) {
-            strong[n] = phi[i];
-            n += phi[i].activation >= threshold_;
-        }
+        const std::size_t n = kernels_->strongFeatures(phi.data() + from, std::min(kChunk, phi.size() - from), threshold_,
+                                                       UINT32_MAX, strong);
         reserveLive(std::min<std::size_t>(n, featureCount - liveCount_));  // at most that many become live
         // Locals, not members: a store to live_ may alias the member count as far as the compiler
         // knows, which then went through memory on every feature, one serial chain.

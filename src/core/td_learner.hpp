@@ -119,18 +119,19 @@ public:
     // falls below the threshold are dropped. One pass: both follow the live list.
     void trainAndDecay(WeightTable& w, float delta, TdRates rates, float decay, PrefetchQueue* ahead = nullptr);
     // Staged training (td_staged.cpp), for a batch that updates the bodies of one brain on several
-    // threads (core/shared_step.cpp). stage() keeps what trainAndDecay would add to the weights (the
-    // step and a copy of every live trace, sorted into `parts` parts of the features; reserveStaged
-    // first) and touches nothing else; decayStaged() then decays the traces as trainAndDecay would,
-    // so the body can mark its new ones at once. trainPart(w, p) adds the kept changes to part p's
-    // features only, so the parts of many bodies can train one brain's weights at once on different
-    // threads, each weight taking the bodies' changes in body order.
+    // threads (core/shared_step.cpp). stage() keeps the step trainAndDecay would take and touches
+    // nothing else (chooseActionStaged reads it); keepAndDecay() then keeps a copy of every live
+    // trace, sorted into `parts` parts of the features (reserveStaged first), and decays the traces
+    // as trainAndDecay would, in one pass, so the body can mark its new ones at once. trainPart(w, p)
+    // adds the kept changes to part p's features only, so the parts of many bodies can train one
+    // brain's weights at once on different threads, each weight taking the bodies' changes in body
+    // order.
     void reserveStaged(std::uint32_t parts);
-    void stage(float delta, TdRates rates, std::uint32_t parts);
+    void stage(float delta, TdRates rates);
     void unstage() { staged_ = false; }
-    void decayStaged(float decay);
+    void keepAndDecay(float decay, std::uint32_t parts);
     void trainPart(WeightTable& w, std::uint32_t part) const;
-    // chooseAction as it would be once the staged change is applied (before decayStaged): a single
+    // chooseAction as it would be once the staged change is applied (before keepAndDecay): a single
     // update acts after its own learning step.
     std::uint32_t chooseActionStaged(const WeightTable& w, const std::vector<ActiveFeature>& phi, Rng& rng,
                                      std::vector<float>& activations, float& value, bool greedy,
@@ -179,10 +180,10 @@ private:
     // eta * delta per trace component, into `step` (stride_ values), delta clamped as trainAndDecay
     // explains; returns whether the actor's range can be crossed (then the trained rows are clamped).
     bool stepFor(float delta, TdRates rates, float* step) const;
-    void clampPolicy(WeightTable& w, const std::uint32_t* rows, std::size_t count, PolicyRange range) const;
-    // The continuous columns' weights within +-ContinuousPolicy::kWeightBound: their traces have
-    // either sign, so any step can cross it.
-    void clampContinuous(WeightTable& w, const std::uint32_t* rows, std::size_t count) const;
+    // A trained row's actor weights back in range: the discrete columns' within `range` when the
+    // step was `bounded`, the continuous columns' always within +-ContinuousPolicy::kWeightBound
+    // (their traces have either sign, so any step can cross it). trainAndDecay's kernel does the same.
+    void clampRow(float* row, bool bounded, PolicyRange range) const;
     void grow(std::uint32_t featureCount);
     void reserveLive(std::size_t more);  // room for `more` live entries beyond liveCount_
     float* trace(std::uint32_t feature) { return traces_.data() + std::size_t(feature) * stride_; }
@@ -201,7 +202,6 @@ private:
     // no block of its own for it), else in step_.
     static constexpr std::uint32_t kStackStride = 16;
     std::vector<float> step_;
-    std::vector<std::uint32_t> trained_; // rows a bounded update trained (scratch)
     // Staged training: the live features by part (partStart_[p] .. partStart_[p + 1]), their
     // traces as they were (stride_ values each, in the same order), the step.
     std::vector<std::uint32_t> partStart_;

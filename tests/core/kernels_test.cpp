@@ -227,6 +227,80 @@ TEST(Kernels, TrainDecayUpdatesLiveRowsAndDropsFadedTracesInOrder) {
     }
 }
 
+TEST(Kernels, TrainDecayClampsEachTrainedRowsActorColumns) {
+    Rng rng(17);
+    for (const Kernels* k : kernelSets()) {
+        SCOPED_TRACE(k->name);
+        // Discrete columns only (the stride's own loop), and discrete then continuous ones.
+        for (std::uint32_t continuous : {0u, 2u}) {
+            for (bool clampsDiscrete : {true, false}) {
+                const std::uint32_t discrete = 3, traceStride = 1 + discrete + continuous, weightStride = traceStride + 2;
+                const std::uint32_t features = 40;
+                std::vector<float> weights(features * weightStride), traces(features * traceStride, 0.0f), step(traceStride);
+                for (auto& w : weights) w = uniform(rng, -3.0f, 3.0f);
+                for (auto& x : step) x = uniform(rng, -20.0f, 20.0f);
+                std::vector<std::uint32_t> live;
+                for (std::uint32_t f = 0; f < features; f += 2) {
+                    live.push_back(f);
+                    for (std::uint32_t c = 0; c < traceStride; ++c) traces[f * traceStride + c] = uniform(rng, 0.0f, 0.2f);
+                }
+                const std::vector<float> w0 = weights, e0 = traces;
+                TraceStep s;
+                s.step = step.data();
+                s.traceStride = traceStride;
+                s.weightStride = weightStride;
+                s.decay = 0.5f;
+                s.threshold = 0.01f;
+                s.clampsDiscrete = clampsDiscrete;
+                s.discreteColumns = discrete;
+                s.low = -1.0f;
+                s.high = 0.5f;
+                s.boundedColumns = continuous;
+                s.bound = 2.0f;
+                k->trainDecay(s, weights.data(), traces.data(), live.data(), static_cast<std::uint32_t>(live.size()));
+                for (std::uint32_t f = 0; f < features; ++f) {
+                    for (std::uint32_t c = 0; c < weightStride; ++c) {
+                        const bool trained = f % 2 == 0 && c < traceStride;
+                        float expected = w0[f * weightStride + c] + (trained ? step[c] * e0[f * traceStride + c] : 0.0f);
+                        if (trained && c >= 1 && c <= discrete && clampsDiscrete) expected = std::clamp(expected, -1.0f, 0.5f);
+                        if (trained && c > discrete) expected = std::clamp(expected, -2.0f, 2.0f);
+                        EXPECT_NEAR(weights[f * weightStride + c], expected, 1e-5f) << "feature " << f << " column " << c;
+                    }
+                }
+            }
+        }
+    }
+}
+
+TEST(Kernels, StrongFeaturesKeepThoseAtTheThresholdBelowTheIndexLimitInOrder) {
+    Rng rng(19);
+    for (const Kernels* k : kernelSets()) {
+        SCOPED_TRACE(k->name);
+        for (std::size_t n : {0u, 1u, 3u, 4u, 5u, 17u, 64u}) {
+            std::vector<ActiveFeature> phi(n);
+            for (std::size_t i = 0; i < n; ++i) {
+                // Activations on both sides of the threshold and on it; indices on both sides of the limit,
+                // with the top bit set too (the limit is compared unsigned).
+                const float a = i % 5 == 0 ? 0.01f : uniform(rng, 0.0f, 0.03f);
+                const std::uint32_t index = i % 7 == 3 ? 0x80000000u + static_cast<std::uint32_t>(i) : static_cast<std::uint32_t>(rng.below(200));
+                phi[i] = ActiveFeature(index, a);
+            }
+            for (std::uint32_t below : {100u, 0x80000004u, UINT32_MAX}) {
+                std::vector<ActiveFeature> out(n), expected;
+                for (const ActiveFeature& f : phi) {
+                    if (f.activation >= 0.01f && f.index < below) expected.push_back(f);
+                }
+                const std::size_t count = k->strongFeatures(phi.data(), n, 0.01f, below, out.data());
+                ASSERT_EQ(count, expected.size());
+                for (std::size_t i = 0; i < count; ++i) {
+                    EXPECT_EQ(out[i].index, expected[i].index);
+                    EXPECT_EQ(out[i].activation, expected[i].activation);
+                }
+            }
+        }
+    }
+}
+
 TEST(Kernels, TheChosenSetIsTheFastestThisCpuRuns) {
     const Kernels* avx2 = verve::core::avx2Kernels();
     EXPECT_EQ(&verve::core::kernels(), avx2 != nullptr ? avx2 : &verve::core::portableKernels());
