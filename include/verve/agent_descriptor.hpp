@@ -49,8 +49,8 @@ struct Adaptation {
     static constexpr std::uint32_t HabitBound = 1u << 3;
     // One or two continuous sensors (one lattice) get a second lattice at twice the resolution,
     // its features summed with the first's: wide RBFs learn the broad shape fast, narrow ones the
-    // detail a task needs (docs/algorithm.md, "A finer lattice"). Saves made without it keep
-    // their one lattice.
+    // detail a task needs (docs/algorithm.md, "A finer lattice beside a small one"). Saves made
+    // without it keep their one lattice.
     static constexpr std::uint32_t FineLattice = 1u << 4;
     static constexpr std::uint32_t All = Horizon | ActorScale | DecisionRate | HabitBound | FineLattice;
 };

@@ -1,18 +1,20 @@
 // A finer lattice beside a small one (Adaptation::FineLattice; docs/algorithm.md, "A finer
-// lattice"). One resolution cannot serve every task: wide RBFs generalise fast and let a corridor
-// or a maze be learned in a few trials, but they blur what must be told apart within a width (a
-// pendulum balanced near the top, where the right torque flips within 20 degrees, was learned in
-// 300k steps or never at resolution 10 and in 40k at 14; 14 made a 4-sensor task and a steering
-// car slower). A second lattice over the same sensors at twice the resolution, its features summed
-// with the coarse ones (as tile coding sums tilings of different widths), gives both: the coarse
-// RBFs learn the broad shape at once, the fine ones the detail where it matters, and the user need
-// not know which a task wants. Only beside one lattice over up to kFineLatticeSensors sensors: over
-// n sensors a fine lattice holds 2^n times the coarse one's RBFs and fills in that much more slowly
-// (3 sensors: the steering car 82.8 -> 86.3 steps; 4: a signaled plate with distractors 38.4 ->
-// 48.6). Beside the many small lattices of sensor groups fine ones also helped (a signaled plate
-// with 6 distractors 18.5 -> 11.2 steps) but doubled the features of an update and could hold
-// five times the RBFs: an NPC with a dozen rays pays that on every step, so they are not made.
+// lattice beside a small one"). One resolution cannot serve every task: wide RBFs generalise fast
+// and let a corridor or a maze be learned in a few trials, but they blur what must be told apart
+// within a width (a pendulum balanced near the top, where the right torque flips within 20
+// degrees, was learned in 300k steps or never at resolution 10 and in 40k at 14; 14 made a
+// 4-sensor task and a steering car slower). A second lattice over the same sensors at twice the
+// resolution, its features summed with the coarse ones (as tile coding sums tilings of different
+// widths), gives both: the coarse RBFs learn the broad shape at once, the fine ones the detail
+// where it matters, and the user need not know which a task wants. Only beside one lattice over up
+// to kFineLatticeSensors sensors: over n sensors a fine lattice holds 2^n times the coarse one's
+// RBFs and fills in that much more slowly (3 sensors: the steering car 82.8 -> 86.3 steps; 4: a
+// signaled plate with distractors 38.4 -> 48.6). Beside the many small lattices of sensor groups
+// fine ones also helped (a signaled plate with 6 distractors 18.5 -> 11.2 steps) but doubled the
+// features of an update and could hold five times the RBFs: an NPC with a dozen rays pays that on
+// every step, so they are not made.
 #pragma once
+#include <cstddef>
 #include <cstdint>
 #include <vector>
 
