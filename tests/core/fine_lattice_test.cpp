@@ -47,6 +47,8 @@ TEST(FineLattice, NoneForMoreSensorsGroupsNoSensorsOrWhenNotAsked) {
     AgentDescriptor discrete;
     discrete.addDiscreteSensor(3);
     EXPECT_EQ(core::lattices(discrete).size(), 1u);
+    discrete.grouping = SensorGrouping::Custom;  // no continuous sensors, no groups (found by fuzz_calls)
+    EXPECT_TRUE(core::lattices(discrete).empty());
     EXPECT_EQ(core::lattices(withoutFineLattice(sensors(2))).size(), 1u);
     AgentDescriptor custom = sensors(2);
     custom.grouping = SensorGrouping::Custom;
