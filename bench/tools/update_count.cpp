@@ -8,7 +8,8 @@
 //   valgrind --tool=callgrind --cache-sim=yes --LL=4194304,16,64 --toggle-collect='*measuredFrames*' \
 //     build/bench/verve_update_count crowd-cart-pole
 // brain-cart-pole: the same crowd as 1,000 bodies of one brain, each frame one batch call on one
-// thread (the parallel phases of core/shared_step.cpp), counted the same way.
+// thread (the parallel phases of core/shared_step.cpp), counted the same way; brain-tiny: 3,000
+// tiny bodies of one brain.
 #include <cstdio>
 #include <cstdlib>
 #include <cstring>
@@ -111,10 +112,11 @@ __attribute__((noinline)) void measuredFrames(Crowd& crowd, int count) {
 
 int main(int argc, char** argv) {
     const std::string shape = argc > 1 ? argv[1] : "";
-    if (shape == "crowd-cart-pole" || shape == "crowd-tiny" || shape == "brain-cart-pole") {
-        const bool tiny = shape == "crowd-tiny", brain = shape == "brain-cart-pole";
-        Crowd crowd(tiny ? 2 : 4, tiny ? 2 : 3, tiny ? 0 : 676, tiny ? 3000 : brain ? 1 : 300);
-        if (brain) crowd.shareOneBrain(1000);
+    if (shape == "crowd-cart-pole" || shape == "crowd-tiny" || shape == "brain-cart-pole" || shape == "brain-tiny") {
+        const bool tiny = shape == "crowd-tiny" || shape == "brain-tiny";
+        const bool brain = shape == "brain-cart-pole" || shape == "brain-tiny";
+        Crowd crowd(tiny ? 2 : 4, tiny ? 2 : 3, tiny ? 0 : 676, brain ? 1 : tiny ? 3000 : 300);
+        if (brain) crowd.shareOneBrain(tiny ? 3000 : 1000);
         for (int i = 0; i < 10; ++i) crowd.frame();
         measuredFrames(crowd, 20);
         std::printf("%s: %zu agents x 20 frames = %zu updates counted\n", shape.c_str(), crowd.agents_.size(),
@@ -140,6 +142,6 @@ int main(int argc, char** argv) {
         return 0;
     }
     std::fprintf(stderr, "usage: verve_update_count cart-pole | dense-4d-R | dense-2d-R (R: resolution, at most 40 in 4-D, 400 in "
-                         "2-D) | crowd-cart-pole | crowd-tiny | brain-cart-pole\n");
+                         "2-D) | crowd-cart-pole | crowd-tiny | brain-cart-pole | brain-tiny\n");
     return 2;
 }

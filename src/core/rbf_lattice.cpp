@@ -12,6 +12,20 @@ namespace {
 
 constexpr float kCutoffWidths = 4.0f;            // activations beyond 4 sigma count as zero
 
+// Cells at least 4 sigma wide that tile [-1, 1] exactly, so that the neighbours of a cell hold
+// every RBF within the cutoff, also across the seam of a circular sensor. One cell holds the whole
+// array, read as one stream whose blocks' boxes do the skipping, when a lookup would read (nearly)
+// all cells anyway (3 or fewer per dimension), and when the whole lattice is small
+// (kOneCellRbfs): a lookup of one or two sensors at resolution 20 would otherwise hash its way
+// through 9 of 25 scattered cells, each a cache miss in a crowd, to scan what one stream of at
+// most a few hundred centres holds.
+constexpr double kOneCellRbfs = 1024;
+
+std::int32_t cellsPerDim(std::uint32_t resolution, std::size_t dims) {
+    if (resolution / 4 <= 3 || std::pow(double(resolution), double(dims)) <= kOneCellRbfs) return 1;
+    return static_cast<std::int32_t>(resolution / 4);
+}
+
 std::uint64_t mix(std::uint64_t h, std::uint64_t v) {
     h ^= v + 0x9e3779b97f4a7c15ULL + (h << 6) + (h >> 2);
     return h * 0xff51afd7ed558ccdULL;
@@ -25,11 +39,7 @@ RbfLattice::RbfLattice(const std::vector<std::uint32_t>& discreteCounts, const s
       numContinuous_(static_cast<std::uint32_t>(circular.size())),
       resolution_(resolution),
       sigma_(2.0f / static_cast<float>(std::max<std::uint32_t>(resolution, 1))),
-      // Cells at least 4 sigma wide that tile [-1, 1] exactly, so that the neighbours of a cell
-      // hold every RBF within the cutoff, also across the seam of a circular sensor. With 3 or
-      // fewer per dimension a lookup reads (nearly) all cells anyway: one cell holds the array,
-      // read as one stream, and its blocks' boxes do the skipping.
-      cellsPerDim_(resolution / 4 <= 3 ? 1 : static_cast<std::int32_t>(resolution / 4)),
+      cellsPerDim_(cellsPerDim(resolution, circular.size())),
       cellSize_(2.0f / static_cast<float>(cellsPerDim_)),
       maxNeighbours_(1),
       keyCount_(1),
@@ -337,7 +347,7 @@ bool RbfLattice::find(const std::int32_t* discrete, const float* continuous,
     if (arrayIt == arrays_.end()) return false;
     const auto& cells = arrayIt->second.cells;
 
-    // An array of one cell (every array below resolution 16) is read whole: a lookup has at least
+    // An array of one cell (below resolution 16, or of at most kOneCellRbfs RBFs) is read whole: a lookup has at least
     // one neighbour cell, and skipping the candidates' scratch spares a crowd's update its misses.
     const std::size_t neighbours = cells.size() <= 1 ? 1 : neighbourCandidates(continuous, scratch);
 

@@ -99,7 +99,8 @@ public:
         }
     }
     // A batch's staged prefetch of the next lookup (Agent::Impl::prefetch), for a representation
-    // of one array of one cell (every dynamic agent below resolution 16 without discrete sensors):
+    // of one array of one cell (a dynamic agent without discrete sensors below resolution 16, or
+    // of one or two sensors up to resolution 1024 or 32: rbf_lattice.cpp, kOneCellRbfs):
     // stage 0 asks for the array, 1 for its cell, 2 for the cell's centres; each stage reads only
     // what the one before asked for. Other representations ask for nothing.
     static constexpr unsigned kPrefetchStages = 3;

@@ -53,13 +53,18 @@ public:
     // Every feature's saved key and centre (numContinuous values; 0 for sensors outside its
     // group), by feature index. Not for the hot path.
     void features(std::vector<std::uint64_t>& keys, std::vector<float>& centres) const;
-    // A batch's staged prefetch of the next lookup (RbfLattice::prefetchLookup), for one lattice.
+    // A batch's staged prefetch of the next lookup (RbfLattice::prefetchLookup), for one lattice
+    // or two (a small one and its fine twin: core/fine_lattice.hpp). Sensor groups' many small
+    // lattices are left to the hardware: their arrays would crowd out the traces.
     static constexpr unsigned kPrefetchStages = RbfLattice::kPrefetchStages;
+    static constexpr std::size_t kPrefetchedLattices = 2;
     void prefetchLookup(unsigned stage) const noexcept {
-        if (groups_.size() == 1) groups_[0].lattice.prefetchLookup(stage);
+        if (groups_.size() > kPrefetchedLattices) return;
+        for (const Group& group : groups_) group.lattice.prefetchLookup(stage);
     }
     void addArraysTo(PrefetchQueue& q) const noexcept {
-        if (groups_.size() == 1) groups_[0].lattice.addArraysTo(q);
+        if (groups_.size() > kPrefetchedLattices) return;
+        for (const Group& group : groups_) group.lattice.addArraysTo(q);
     }
     // Divides the learning rates: the expected activation sum, summed over the lattices (a fine
     // one counts kFineActivationShare of its own: core/fine_lattice.hpp).

@@ -3,6 +3,7 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <utility>
 #include <vector>
 
 #include "core/rng.hpp"
@@ -185,6 +186,29 @@ TEST(StateRepresentation, SpatialIndexMatchesBruteForce) {
                 rep.activate(nullptr, p, true, phi);
             }
             expectIndexMatchesBruteForce(rep, 3, {circular, false, circular}, 2.0f / static_cast<float>(resolution), rng, 300);
+        }
+    }
+}
+
+// A small lattice (at most 1,024 RBFs in all: one sensor up to resolution 1,024, two up to 32) is
+// one cell read through its block boxes; two sensors at resolution 40 keep the grid. One lattice
+// each (the fine one cleared): the brute force knows one width.
+TEST(StateRepresentation, SmallLatticesInOneCellMatchBruteForce) {
+    for (bool circular : {false, true}) {
+        for (auto [dims, resolution] : {std::pair{1u, 20u}, {1u, 1024u}, {2u, 20u}, {2u, 32u}, {2u, 40u}}) {
+            AgentDescriptor d;
+            for (std::uint32_t k = 0; k < dims; ++k) d.addContinuousSensor(circular && k == 0);
+            d.resolution = resolution;
+            d.adaptation &= ~verve::Adaptation::FineLattice;
+            StateRepresentation rep(d);
+            verve::core::Rng rng(resolution + dims);
+            std::vector<ActiveFeature> phi;
+            float p[2];
+            for (int i = 0; i < 3000; ++i) {
+                for (std::uint32_t k = 0; k < dims; ++k) p[k] = rng.uniform() * 2 - 1;
+                rep.activate(nullptr, p, true, phi);
+            }
+            expectIndexMatchesBruteForce(rep, dims, {circular, false}, 2.0f / static_cast<float>(resolution), rng, 300);
         }
     }
 }
