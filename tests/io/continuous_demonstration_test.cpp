@@ -241,3 +241,27 @@ TEST(ContinuousDemonstration, VersionOneRecordingsStillLoad) {
     r.replayInto(agent);
     EXPECT_EQ(agent.stats().steps, 2u);
 }
+
+// The fuzz corpus's steering recording as version 1 wrote it (3 continuous sensors, 2 actions, 8 steps,
+// a truncation and an end): it loads and replays into the steering agent it was made for.
+TEST(ContinuousDemonstration, AVersionOneFileStillLoads) {
+    const Recording r = loadRecording(std::string(VERVE_IO_TEST_DATA) + "/recording_v1_steering.vrec");
+    EXPECT_EQ(r.size(), 10u);
+    EXPECT_EQ(r.steps(), 8u);
+    EXPECT_EQ(r.continuousSensors(), 3u);
+    EXPECT_EQ(r.continuousActions(), 0u);
+    EXPECT_TRUE(r.continuousActionValues().empty());
+    AgentDescriptor d;
+    for (int i = 0; i < 3; ++i) d.addContinuousSensor();
+    d.numActions = 2;
+    d.continuousActions = 2;
+    Agent agent(d);
+    r.replayInto(agent);
+    EXPECT_EQ(agent.stats().steps, 8u);
+    // Saved again, it is a version 2 file that loads to the same entries.
+    const std::string bytes = recordingToBytes(r);
+    std::uint32_t version = 0;
+    std::memcpy(&version, bytes.data() + 8, 4);
+    EXPECT_EQ(version, 2u);
+    EXPECT_EQ(recordingFromBytes(bytes.data(), bytes.size()).kinds(), r.kinds());
+}
