@@ -341,7 +341,8 @@ VERVE_API verve_result VERVE_CALL verve_agent_get_action_probabilities(const ver
     uint32_t count);
 /* The continuous actions of the latest update (count = num_continuous_actions floats, each in
  * [-1, 1]): sampled around the policy's mean, or the mean itself with VERVE_ACTION_GREEDY or on a
- * demonstrated step. 0s before any update. A wrong count is refused. */
+ * demonstrated step (the teacher's values after verve_agent_update_demonstrated_continuous). 0s
+ * before any update. A wrong count is refused. */
 VERVE_API verve_result VERVE_CALL verve_agent_get_continuous_action(const verve_agent* agent, float* out,
     uint32_t count);
 VERVE_API verve_result VERVE_CALL verve_agent_get_value(const verve_agent* agent, float* out_value);

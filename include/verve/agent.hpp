@@ -119,7 +119,7 @@ public:
     const std::vector<float>& actionProbabilities() const;
     // The continuous actions of the latest update (AgentDescriptor::continuousActions values, each
     // in [-1, 1]): sampled around the policy's mean, or the mean itself with Greedy selection or on a
-    // demonstrated step. Before any update, 0s.
+    // demonstrated step (the teacher's values, when the step carried them). Before any update, 0s.
     const std::vector<float>& continuousAction() const;
 
     const AgentDescriptor& descriptor() const;
