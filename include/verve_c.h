@@ -291,9 +291,19 @@ VERVE_API verve_result VERVE_CALL verve_agent_update_masked(verve_agent* agent, 
 VERVE_API verve_result VERVE_CALL verve_agent_update_demonstrated(verve_agent* agent, float reward,
     const int32_t* discrete, uint32_t n_discrete, const float* continuous, uint32_t n_continuous,
     float dt, const uint8_t* action_mask, uint32_t n_actions, uint32_t action);
+/* verve_agent_update_demonstrated with the teacher's continuous actions too: continuous_action holds
+ * n_continuous_actions values (the agent's num_continuous_actions), each in [-1, 1], that the host
+ * played (a player's steering and throttle). The agent learns from them as from values it drew
+ * itself and is pulled towards them; verve_agent_get_continuous_action then reads them back. A wrong
+ * count, NULL with a count above 0, NaN or a value outside [-1, 1] is refused and changes nothing. */
+VERVE_API verve_result VERVE_CALL verve_agent_update_demonstrated_continuous(verve_agent* agent, float reward,
+    const int32_t* discrete, uint32_t n_discrete, const float* continuous, uint32_t n_continuous,
+    float dt, const uint8_t* action_mask, uint32_t n_actions, uint32_t action,
+    const float* continuous_action, uint32_t n_continuous_actions);
 /* A teacher's judgement (docs/teaching.md): praise in [-1, 1] (1 good, -1 bad) of what the agent did
  * over the last 2.5 s, as a player's click arrives 0.2-2 s after the act it judges. It moves the
- * actor's preferences for those acts and is not a reward. The agent remembers its acts from its first
+ * actor's preferences for those acts (continuous actions' means towards the values played, or away
+ * when scolded) and is not a reward. The agent remembers its acts from its first
  * judgement on (praise 0 arms the memory without judging); the memory is not saved. NaN or praise
  * outside [-1, 1] is refused and changes nothing. */
 VERVE_API verve_result VERVE_CALL verve_agent_teach(verve_agent* agent, float praise);
@@ -331,7 +341,8 @@ VERVE_API verve_result VERVE_CALL verve_agent_get_action_probabilities(const ver
     uint32_t count);
 /* The continuous actions of the latest update (count = num_continuous_actions floats, each in
  * [-1, 1]): sampled around the policy's mean, or the mean itself with VERVE_ACTION_GREEDY or on a
- * demonstrated step. 0s before any update. A wrong count is refused. */
+ * demonstrated step (the teacher's values after verve_agent_update_demonstrated_continuous). 0s
+ * before any update. A wrong count is refused. */
 VERVE_API verve_result VERVE_CALL verve_agent_get_continuous_action(const verve_agent* agent, float* out,
     uint32_t count);
 VERVE_API verve_result VERVE_CALL verve_agent_get_value(const verve_agent* agent, float* out_value);
@@ -447,6 +458,11 @@ VERVE_API void VERVE_CALL verve_recording_destroy(verve_recording* recording); /
 VERVE_API verve_result VERVE_CALL verve_recording_add_step(verve_recording* recording, float reward,
     const int32_t* discrete, uint32_t n_discrete, const float* continuous, uint32_t n_continuous,
     float dt, uint32_t action);
+/* As verve_agent_update_demonstrated_continuous takes them (no mask): n_continuous_actions must be
+ * the num_continuous_actions of the agent the recording was created from. */
+VERVE_API verve_result VERVE_CALL verve_recording_add_step_continuous(verve_recording* recording, float reward,
+    const int32_t* discrete, uint32_t n_discrete, const float* continuous, uint32_t n_continuous,
+    float dt, uint32_t action, const float* continuous_action, uint32_t n_continuous_actions);
 VERVE_API verve_result VERVE_CALL verve_recording_add_end_episode(verve_recording* recording, float final_reward);
 VERVE_API verve_result VERVE_CALL verve_recording_add_truncation(verve_recording* recording, float reward);
 /* Entries (steps and trial ends) so far. */

@@ -143,6 +143,12 @@ export class Agent {
   /** A step the player or a scripted AI took (docs/teaching.md): `action` is learned from as the agent's own. */
   updateDemonstrated(reward: number, observation: Observation | null | undefined, dt: number, action: number,
     mask?: ArrayLike<boolean | 0 | 1>): void;
+  /**
+   * updateDemonstrated with the continuous actions the host played too (docs/teaching.md): one per
+   * continuous action, each in [-1, 1]; continuousAction() then reads them back.
+   */
+  updateDemonstratedContinuous(reward: number, observation: Observation | null | undefined, dt: number, action: number,
+    continuousAction: ArrayLike<number>, mask?: ArrayLike<boolean | 0 | 1>): void;
   /** A teacher's judgement in [-1, 1] of what the agent did over the last 2.5 s (docs/teaching.md); not a reward. */
   teach(praise: number): void;
   /** Every entry of a recording into this agent, as demonstrated steps and trial ends (docs/teaching.md). */
@@ -197,6 +203,9 @@ export class Recording {
   private constructor();
   readonly disposed: boolean;
   addStep(reward: number, observation: Observation | null | undefined, dt: number, action: number): void;
+  /** A step with the host's continuous actions, as Agent.updateDemonstratedContinuous takes it (no mask). */
+  addStepContinuous(reward: number, observation: Observation | null | undefined, dt: number, action: number,
+    continuousAction: ArrayLike<number>): void;
   addEndEpisode(finalReward: number): void;
   addTruncation(reward: number): void;
   size(): number;

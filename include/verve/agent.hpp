@@ -40,6 +40,13 @@ struct ActionMask {
     std::size_t count = 0;
 };
 
+// The continuous action values a teacher chose on a demonstrated step (docs/teaching.md): one per
+// AgentDescriptor::continuousActions, each in [-1, 1].
+struct ContinuousActionView {
+    const float* values = nullptr;
+    std::uint32_t count = 0;
+};
+
 enum class SensorKind : std::uint8_t { Discrete = 0, Continuous = 1 };
 
 // One axis of a value-function image: a sensor swept over its range.
@@ -73,6 +80,12 @@ public:
     // towards it; the next plain update acts on its own again. `action` must be one the mask
     // allows (any, without a mask); a refused call changes nothing.
     void updateDemonstrated(float reward, ObservationView obs, float dt, std::uint32_t action, ActionMask mask = {});
+    // The same with the teacher's continuous actions too (one value per continuous action, each in
+    // [-1, 1]): the agent learns from them as from values it drew itself and is pulled towards them
+    // (without them, the step plays the policy's means). A wrong count, NaN or a value outside
+    // [-1, 1] is refused (Error(InvalidArgument)) and changes nothing.
+    void updateDemonstrated(float reward, ObservationView obs, float dt, std::uint32_t action,
+                            ContinuousActionView continuousAction, ActionMask mask = {});
 
     // Ends a trial: `finalReward` is terminal (no value is bootstrapped past it), then the
     // short-term memory is cleared. The next update starts a fresh trial.
@@ -106,7 +119,7 @@ public:
     const std::vector<float>& actionProbabilities() const;
     // The continuous actions of the latest update (AgentDescriptor::continuousActions values, each
     // in [-1, 1]): sampled around the policy's mean, or the mean itself with Greedy selection or on a
-    // demonstrated step. Before any update, 0s.
+    // demonstrated step (the teacher's values, when the step carried them). Before any update, 0s.
     const std::vector<float>& continuousAction() const;
 
     const AgentDescriptor& descriptor() const;

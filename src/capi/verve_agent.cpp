@@ -83,6 +83,22 @@ VERVE_API verve_result VERVE_CALL verve_agent_update_demonstrated(verve_agent* a
     });
 }
 
+VERVE_API verve_result VERVE_CALL verve_agent_update_demonstrated_continuous(
+    verve_agent* agent, float reward, const int32_t* discrete, uint32_t n_discrete, const float* continuous,
+    uint32_t n_continuous, float dt, const uint8_t* action_mask, uint32_t n_actions, uint32_t action,
+    const float* continuous_action, uint32_t n_continuous_actions) {
+    return guarded(__func__, [&] {
+        const AgentUse use(agent);
+        if (n_discrete > 0) requireArg(discrete, "discrete (with n_discrete > 0)");
+        if (n_continuous > 0) requireArg(continuous, "continuous (with n_continuous > 0)");
+        if (action_mask == nullptr && n_actions != 0) requireArg(action_mask, "action_mask (with n_actions > 0)");
+        if (n_continuous_actions > 0) requireArg(continuous_action, "continuous_action (with n_continuous_actions > 0)");
+        use.agent().updateDemonstrated(reward, verve::ObservationView{discrete, n_discrete, continuous, n_continuous}, dt,
+                                       action, verve::ContinuousActionView{continuous_action, n_continuous_actions},
+                                       verve::ActionMask{action_mask, n_actions});
+    });
+}
+
 VERVE_API verve_result VERVE_CALL verve_agent_teach(verve_agent* agent, float praise) {
     return guarded(__func__, [&] {
         const AgentUse use(agent);

@@ -71,6 +71,19 @@ VERVE_API verve_result VERVE_CALL verve_recording_add_step(verve_recording* reco
     });
 }
 
+VERVE_API verve_result VERVE_CALL verve_recording_add_step_continuous(
+    verve_recording* recording, float reward, const int32_t* discrete, uint32_t n_discrete, const float* continuous,
+    uint32_t n_continuous, float dt, uint32_t action, const float* continuous_action, uint32_t n_continuous_actions) {
+    return guarded(__func__, [&] {
+        const RecordingUse use(recording);
+        if (n_discrete > 0) requireArg(discrete, "discrete (with n_discrete > 0)");
+        if (n_continuous > 0) requireArg(continuous, "continuous (with n_continuous > 0)");
+        if (n_continuous_actions > 0) requireArg(continuous_action, "continuous_action (with n_continuous_actions > 0)");
+        use.recording().addStep(reward, verve::ObservationView{discrete, n_discrete, continuous, n_continuous}, dt, action,
+                                verve::ContinuousActionView{continuous_action, n_continuous_actions});
+    });
+}
+
 VERVE_API verve_result VERVE_CALL verve_recording_add_end_episode(verve_recording* recording, float final_reward) {
     return guarded(__func__, [&] { RecordingUse(recording).recording().addEndEpisode(final_reward); });
 }

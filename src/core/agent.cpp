@@ -4,6 +4,7 @@
 #include <utility>
 
 #include "core/agent_impl.hpp"
+#include "core/continuous_demonstration.hpp"
 #include "core/decision_rate.hpp"
 #include "core/demonstration.hpp"
 #include "core/observation_check.hpp"
@@ -226,7 +227,7 @@ void Agent::Impl::reserveBody(std::uint32_t features, std::size_t active) {
     core::reserveRoom(probabilities, td.traceStride());  // a restore may have left it numActions
     td.reserve(features, active);
     if (desc.planning) planner.reserve(features);
-    if (teacher.armed()) teacher.reserve(active);
+    if (teacher.armed()) teacher.reserve(active, td.continuousColumns());
 }
 
 float Agent::Impl::learnedReward(float reward, bool final) {
@@ -280,17 +281,23 @@ std::uint32_t Agent::update(float reward, const Observation& obs, float dt) { re
 std::uint32_t Agent::update(float reward, ObservationView obs, float dt) { return update(reward, obs, dt, ActionMask{}); }
 
 std::uint32_t Agent::update(float reward, ObservationView obs, float dt, ActionMask mask) {
-    return impl_->step(reward, obs, dt, mask, nullptr);
+    return impl_->step(reward, obs, dt, mask, nullptr, nullptr);
 }
 
 void Agent::updateDemonstrated(float reward, ObservationView obs, float dt, std::uint32_t action, ActionMask mask) {
-    impl_->step(reward, obs, dt, mask, &action);
+    impl_->step(reward, obs, dt, mask, &action, nullptr);
+}
+
+void Agent::updateDemonstrated(float reward, ObservationView obs, float dt, std::uint32_t action,
+                               ContinuousActionView continuousAction, ActionMask mask) {
+    core::checkDemonstratedContinuous(impl_->desc, continuousAction.values, continuousAction.count);
+    impl_->step(reward, obs, dt, mask, &action, continuousAction.count > 0 ? continuousAction.values : nullptr);
 }
 
 std::uint32_t Agent::Impl::step(float reward, ObservationView obs, float dt, ActionMask mask,
-                                const std::uint32_t* demonstrated) {
+                                const std::uint32_t* demonstrated, const float* demonstratedContinuous) {
     Impl& s = *this;
-    // Everything is checked before anything changes.
+    // Everything is checked before anything changes (demonstratedContinuous by updateDemonstrated).
     if (mask.allowed != nullptr || mask.count != 0) core::checkActionMask(s.desc, mask.allowed, mask.count);
     if (demonstrated != nullptr) core::checkDemonstratedAction(s.desc, *demonstrated, mask.allowed);
     core::checkObservation(s.desc, obs);
@@ -338,23 +345,29 @@ std::uint32_t Agent::Impl::step(float reward, ObservationView obs, float dt, Act
     std::uint32_t action = s.td.chooseAction(s.weights, s.current, s.rng, s.probabilities, s.latestValue,
                                              mask.allowed, !samples, hopeless, s.ahead);
     s.recordChoice(mask.allowed, hopeless, k);
-    // A demonstration names the discrete action only: the continuous ones then play their means.
-    const float* gradients = s.actContinuous(!samples, dt);
+    // A demonstration without continuous values plays the continuous actions' means; with them, the
+    // teacher's values stand for the agent's draws (core/continuous_demonstration.hpp).
+    const float* gradients = s.actContinuous(!samples, dt, demonstratedContinuous);
     if (demonstrated != nullptr) {
         // The demonstrator's action stands for the agent's own (core/demonstration.hpp).
         action = *demonstrated;
         if (s.learning) {
             core::imitate(s.weights, s.current, action, s.td.branches(), mask.allowed, k.rates.policy, k.rates.policyRange);
+            if (demonstratedContinuous != nullptr) {
+                core::imitateContinuous(s.weights, s.current, s.td.columns(), s.td.continuousColumns(), gradients, k.rates.policy);
+            }
         }
     }
     if (s.learning && s.learnsFromRealSteps()) s.td.mark(s.current, action, s.rep.featureCount(), gradients);
-    s.endStep(obs, dt, action);
+    s.endStep(obs, dt, action, gradients);
     return action;
 }
 
-const float* Agent::Impl::actContinuous(bool greedy, float dt) {
+const float* Agent::Impl::actContinuous(bool greedy, float dt, const float* demonstrated) {
     if (td.continuousColumns() == 0) return nullptr;
-    continuous.act(probabilities.data() + td.columns(), rng, dt, greedy);
+    const float* sums = probabilities.data() + td.columns();
+    if (demonstrated != nullptr) continuous.play(sums, demonstrated);
+    else continuous.act(sums, rng, dt, greedy);
     probabilities.resize(td.columns());
     return continuous.gradients();
 }
@@ -379,8 +392,8 @@ void Agent::Impl::recordChoice(const std::uint8_t* allowed, float hopeless, cons
     recordProbabilities(allowed, latestValue <= hopeless);
 }
 
-void Agent::Impl::endStep(ObservationView obs, float dt, std::uint32_t action) {
-    if (teacher.armed()) teacher.remember(dt, action, current);
+void Agent::Impl::endStep(ObservationView obs, float dt, std::uint32_t action, const float* gradients) {
+    if (teacher.armed()) teacher.remember(dt, action, current, gradients);
     std::swap(previous, current);
     previousAction = action;
     previousDiscrete.assign(obs.discrete, obs.discrete + obs.numDiscrete);

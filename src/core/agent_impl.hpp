@@ -33,8 +33,10 @@ struct Agent::Impl {
     // A body of a shared brain: its own short-term memory and random stream `seed`.
     Impl(std::shared_ptr<BrainState> shared, std::uint64_t seed);
 
-    // Agent::update and Agent::updateDemonstrated (`demonstrated`: the action the host took).
-    std::uint32_t step(float reward, ObservationView obs, float dt, ActionMask mask, const std::uint32_t* demonstrated);
+    // Agent::update and Agent::updateDemonstrated (`demonstrated`: the action the host took;
+    // `demonstratedContinuous`: its continuous actions' values, checked already, or nullptr).
+    std::uint32_t step(float reward, ObservationView obs, float dt, ActionMask mask, const std::uint32_t* demonstrated,
+                       const float* demonstratedContinuous);
     StepConstants constantsFor(float dt) const;
     StepConstants constantsFor(float dt, const core::RewardRange& rewards) const;  // with these rewards seen
     // tau_discount, or the horizon the trials set with Adaptation::Horizon (core/horizon.hpp).
@@ -49,10 +51,12 @@ struct Agent::Impl {
     float hopelessFor(bool samples, const StepConstants& k) const;
     void recordChoice(const std::uint8_t* allowed, float hopeless, const StepConstants& k);
     // The continuous actions' values from the sums chooseAction left after the discrete ones (then
-    // dropped from `probabilities`); `greedy`: their means. Their gradients for mark(), or nullptr.
-    const float* actContinuous(bool greedy, float dt);
-    // The step's end: the teacher's memory, `current` becomes `previous`, the stats.
-    void endStep(ObservationView obs, float dt, std::uint32_t action);
+    // dropped from `probabilities`); `greedy`: their means; `demonstrated`: a teacher's values. Their
+    // gradients for mark(), or nullptr.
+    const float* actContinuous(bool greedy, float dt, const float* demonstrated);
+    // The step's end: the teacher's memory (with the continuous `gradients`), `current` becomes
+    // `previous`, the stats.
+    void endStep(ObservationView obs, float dt, std::uint32_t action, const float* gradients);
     // A trial ends (endEpisode, truncateEpisode): its longest stretch of an unchanged step reward
     // informs the horizon.
     void endTrial();

@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 
+#include "core/continuous_demonstration.hpp"
 #include "core/td_learner.hpp"
 
 namespace verve::core {
@@ -44,6 +45,11 @@ void ContinuousActions::act(const float* sums, Rng& rng, float dt, bool greedy) 
         g[1] = ContinuousPolicy::kStepScale * std::clamp(0.5f * (n * n - 1.0f), -0.5f, 1.5f) * dLogSigma;
     }
     running_ = !greedy || running_;
+}
+
+void ContinuousActions::play(const float* sums, const float* demonstrated) {
+    demonstratedGradients(sums, demonstrated, count_, gradients_.data());
+    values_.assign(demonstrated, demonstrated + count_);
 }
 
 void ContinuousActions::resetNoise() { running_ = false; }

@@ -56,6 +56,9 @@ public:
     // the correlated noise, or the mean when `greedy` (no draw). `dt` seconds since the last update.
     // Leaves in gradients() what mark() adds to each column's trace (0s when greedy).
     void act(const float* sums, Rng& rng, float dt, bool greedy);
+    // A teacher's values instead (core/continuous_demonstration.hpp): no draw, the noise kept; the
+    // gradients those values would have left.
+    void play(const float* sums, const float* demonstrated);
     const std::vector<float>& values() const { return values_; }
     const float* gradients() const { return gradients_.data(); }
 

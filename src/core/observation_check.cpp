@@ -41,6 +41,21 @@ void checkActionMask(const AgentDescriptor& desc, const std::uint8_t* allowed, s
     }
 }
 
+void checkDemonstratedContinuous(const AgentDescriptor& desc, const float* values, std::uint32_t count) {
+    if (count != desc.continuousActions) {
+        refuse("the demonstrated continuous action has " + std::to_string(count) + " values, the agent has " +
+               std::to_string(desc.continuousActions) + " continuous actions");
+    }
+    if (count > 0 && values == nullptr) refuse("the demonstrated continuous action's values are missing (null)");
+    for (std::uint32_t d = 0; d < count; ++d) {
+        // Written so that NaN fails too.
+        if (!(values[d] >= -1.0f && values[d] <= 1.0f)) {
+            refuse("the demonstrated continuous action " + std::to_string(d) + " is " + std::to_string(values[d]) +
+                   ": each must be within [-1, 1]");
+        }
+    }
+}
+
 void checkDemonstratedAction(const AgentDescriptor& desc, std::uint32_t action, const std::uint8_t* allowed) {
     if (action >= desc.numActions) {
         refuse("the demonstrated action " + std::to_string(action) + " is out of range (the agent has " +

@@ -23,5 +23,7 @@ void checkTimeStep(float dt);
 void checkActionMask(const AgentDescriptor& desc, const std::uint8_t* allowed, std::size_t count);
 // A demonstrated action: one of the agent's, and one `allowed` (a checked mask, or nullptr) allows.
 void checkDemonstratedAction(const AgentDescriptor& desc, std::uint32_t action, const std::uint8_t* allowed);
+// A teacher's continuous actions: `count` values (the agent's continuousActions), each in [-1, 1].
+void checkDemonstratedContinuous(const AgentDescriptor& desc, const float* values, std::uint32_t count);
 
 }  // namespace verve::core

@@ -3,6 +3,7 @@
 // cannot be refused part-way.
 #include "verve/recording.hpp"
 
+#include <algorithm>
 #include <string>
 #include <utility>
 
@@ -16,7 +17,8 @@ namespace {
 [[noreturn]] void refuse(const std::string& message) { throw Error(ErrorCode::InvalidArgument, message); }
 
 // The sensors and actions as an agent's descriptor, checked as an agent's is (AgentDescriptor::validate).
-AgentDescriptor shapeOf(std::vector<std::uint32_t> discrete, std::uint32_t continuous, std::uint32_t actions) {
+AgentDescriptor shapeOf(std::vector<std::uint32_t> discrete, std::uint32_t continuous, std::uint32_t actions,
+                        std::uint32_t continuousActions) {
     // Bounded before anything is sized from it: a loaded file's count may be anything.
     if (continuous > DescriptorLimits::kMaxSensors) {
         refuse("a recording has at most " + std::to_string(DescriptorLimits::kMaxSensors) + " continuous sensors");
@@ -25,17 +27,20 @@ AgentDescriptor shapeOf(std::vector<std::uint32_t> discrete, std::uint32_t conti
     d.discreteSensors = std::move(discrete);
     d.continuousSensors.resize(continuous);
     d.numActions = actions;
+    d.continuousActions = continuousActions;
     d.validate();
     return d;
 }
 
 }  // namespace
 
-Recording::Recording(std::vector<std::uint32_t> discreteSensors, std::uint32_t continuousSensors, std::uint32_t numActions)
-    : shape_(shapeOf(std::move(discreteSensors), continuousSensors, numActions)) {}
+Recording::Recording(std::vector<std::uint32_t> discreteSensors, std::uint32_t continuousSensors, std::uint32_t numActions,
+                     std::uint32_t continuousActions)
+    : shape_(shapeOf(std::move(discreteSensors), continuousSensors, numActions, continuousActions)) {}
 
 Recording Recording::shapedLike(const AgentDescriptor& desc) {
-    return Recording(desc.discreteSensors, static_cast<std::uint32_t>(desc.continuousSensors.size()), desc.numActions);
+    return Recording(desc.discreteSensors, static_cast<std::uint32_t>(desc.continuousSensors.size()), desc.numActions,
+                     desc.continuousActions);
 }
 
 void Recording::checkRoom() const {
@@ -45,19 +50,32 @@ void Recording::checkRoom() const {
 }
 
 void Recording::addStep(float reward, ObservationView obs, float dt, std::uint32_t action) {
+    addChecked(reward, obs, dt, action, nullptr);
+}
+
+void Recording::addStep(float reward, ObservationView obs, float dt, std::uint32_t action, ContinuousActionView continuousAction) {
+    core::checkDemonstratedContinuous(shape_, continuousAction.values, continuousAction.count);
+    addChecked(reward, obs, dt, action, continuousAction.count > 0 ? &continuousAction : nullptr);
+}
+
+void Recording::addChecked(float reward, ObservationView obs, float dt, std::uint32_t action,
+                           const ContinuousActionView* continuousAction) {
     core::checkObservation(shape_, obs);
     core::checkFinite(reward, "reward");
     core::checkTimeStep(dt);
     core::checkDemonstratedAction(shape_, action, nullptr);
     checkRoom();
     // Room first: a failed allocation records nothing.
+    const std::size_t nca = continuousAction != nullptr ? continuousAction->count : 0;
+    core::reserveRoom(continuousActions_, continuousActions_.size() + nca);
     core::reserveRoom(kinds_, kinds_.size() + 1);
     core::reserveRoom(rewards_, rewards_.size() + 1);
     core::reserveRoom(dts_, dts_.size() + 1);
     core::reserveRoom(actions_, actions_.size() + 1);
     core::reserveRoom(discrete_, discrete_.size() + obs.numDiscrete);
     core::reserveRoom(continuous_, continuous_.size() + obs.numContinuous);
-    kinds_.push_back(Kind::Step);
+    kinds_.push_back(continuousAction != nullptr ? Kind::ContinuousStep : Kind::Step);
+    if (nca > 0) continuousActions_.insert(continuousActions_.end(), continuousAction->values, continuousAction->values + nca);
     rewards_.push_back(reward);
     dts_.push_back(dt);
     actions_.push_back(action);
@@ -86,6 +104,13 @@ void Recording::replayInto(Agent& agent) const {
                " actions) are not the agent's (" + std::to_string(d.discreteSensors.size()) + ", " +
                std::to_string(d.continuousSensors.size()) + ", " + std::to_string(d.numActions) + ")");
     }
+    const bool holdsContinuous = std::find(kinds_.begin(), kinds_.end(), Kind::ContinuousStep) != kinds_.end();
+    if (holdsContinuous && d.continuousActions != continuousActions()) {
+        refuse("the recording's steps hold " + std::to_string(continuousActions()) + " continuous actions, the agent has " +
+               std::to_string(d.continuousActions));
+    }
+    const std::size_t nca = continuousActions();
+    std::size_t continuousStep = 0;
     const std::size_t nd = discreteSensors().size();
     const std::size_t nc = continuousSensors();
     std::size_t step = 0;
@@ -97,7 +122,14 @@ void Recording::replayInto(Agent& agent) const {
         } else {
             const ObservationView obs{nd ? discrete_.data() + step * nd : nullptr, nd,
                                       nc ? continuous_.data() + step * nc : nullptr, nc};
-            agent.updateDemonstrated(rewards_[i], obs, dts_[step], actions_[step]);
+            if (kinds_[i] == Kind::ContinuousStep) {
+                const ContinuousActionView values{nca ? continuousActions_.data() + continuousStep * nca : nullptr,
+                                                  static_cast<std::uint32_t>(nca)};
+                agent.updateDemonstrated(rewards_[i], obs, dts_[step], actions_[step], values);
+                ++continuousStep;
+            } else {
+                agent.updateDemonstrated(rewards_[i], obs, dts_[step], actions_[step]);
+            }
             ++step;
         }
     }

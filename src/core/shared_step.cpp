@@ -57,12 +57,12 @@ bool Agent::Impl::prepareShared(float reward, ObservationView obs, float dt, cor
     const std::uint32_t action = s.td.chooseActionStaged(s.weights, s.current, s.rng, s.probabilities, s.latestValue,
                                                          !samples, hopeless);
     s.recordChoice(nullptr, hopeless, k);
-    const float* gradients = s.actContinuous(!samples, dt);
+    const float* gradients = s.actContinuous(!samples, dt, nullptr);
     // The traces are the body's own: kept as they were for the brain's change, they decay and take
     // the new step's at once.
     if (learns) s.td.keepAndDecay(k.traceDecay, parts);
     if (s.learning && s.learnsFromRealSteps()) s.td.mark(s.current, action, s.rep.featureCount(), gradients);
-    s.endStep(obs, dt, action);
+    s.endStep(obs, dt, action, gradients);
     return true;
 }
 

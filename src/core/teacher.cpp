@@ -6,21 +6,30 @@
 
 namespace verve::core {
 
-void TeacherMemory::reserve(std::size_t features) {
+void TeacherMemory::reserve(std::size_t features, std::uint32_t continuousColumns) {
     // remember() only forgets and compacts before it appends, so room for one more act as things
     // are now is room enough; compaction keeps both vectors within about twice what is remembered.
     reserveRoom(acts_, acts_.size() + 1);
     reserveRoom(pool_, pool_.size() + features);
+    reserveRoom(gradients_, (acts_.size() + 1) * std::size_t(continuousColumns));
+    continuousColumns_ = continuousColumns;
 }
 
-void TeacherMemory::remember(float dt, std::uint32_t action, const std::vector<ActiveFeature>& phi) noexcept {
+void TeacherMemory::remember(float dt, std::uint32_t action, const std::vector<ActiveFeature>& phi,
+                             const float* continuous) noexcept {
     clock_ += dt;
     forgetBefore(clock_ - kWindowSeconds);
     if (acts() >= kMaxActs) ++first_;
     compact();
-    if (acts_.size() == acts_.capacity() || pool_.size() + phi.size() > pool_.capacity()) return;  // reserve() was not called
+    const std::size_t c = continuousColumns_;
+    if (acts_.size() == acts_.capacity() || pool_.size() + phi.size() > pool_.capacity() ||
+        gradients_.size() + c > gradients_.capacity()) {
+        return;  // reserve() was not called
+    }
     acts_.push_back(Act{clock_, action, static_cast<std::uint32_t>(pool_.size()), static_cast<std::uint32_t>(phi.size())});
     pool_.insert(pool_.end(), phi.begin(), phi.end());
+    if (continuous != nullptr) gradients_.insert(gradients_.end(), continuous, continuous + c);
+    else gradients_.resize(gradients_.size() + c, 0.0f);
 }
 
 void TeacherMemory::forgetBefore(double time) noexcept {
@@ -30,6 +39,7 @@ void TeacherMemory::forgetBefore(double time) noexcept {
 void TeacherMemory::compact() noexcept {
     if (first_ == 0 || 2 * first_ < acts_.size()) return;
     const std::uint32_t shift = first_ < acts_.size() ? acts_[first_].begin : static_cast<std::uint32_t>(pool_.size());
+    gradients_.erase(gradients_.begin(), gradients_.begin() + static_cast<std::ptrdiff_t>(first_ * continuousColumns_));
     acts_.erase(acts_.begin(), acts_.begin() + static_cast<std::ptrdiff_t>(first_));
     first_ = 0;
     for (Act& a : acts_) a.begin -= shift;
@@ -41,6 +51,7 @@ void TeacherMemory::credit(WeightTable& w, float praise, float rate, const Polic
     forgetBefore(clock_ - kWindowSeconds);
     scratch_.clear();
     scratch_.reserve(pool_.size() * branches.count);  // may throw: nothing has changed yet
+    gatherContinuous();                                // may throw too, before any change
     for (std::size_t i = first_; i < acts_.size(); ++i) {
         const Act& a = acts_[i];
         std::uint32_t column[ActionBranches::kMax];
@@ -67,6 +78,7 @@ void TeacherMemory::credit(WeightTable& w, float praise, float rate, const Polic
         else weight = std::min(weight, std::max(weight + step, -kPraiseReach));
         weight = range.clamp(weight);
     }
+    creditContinuous(w, praise, rate, branches.columns);
 }
 
 }  // namespace verve::core

@@ -10,6 +10,11 @@
 // never sees it, so the game's own rewards and values stay as they are. A judgement moves a weight
 // only within +-kPraiseReach, so acts scolded often end alike at the floor instead of frozen in order.
 //
+// Continuous actions (core/continuous_praise.cpp): an act also keeps the natural gradient of what
+// it played (its deviation from the mean, as the actor's trace gathers it), and a judgement moves
+// each mean and spread weight along it: praise pulls the mean towards the values played, scolding
+// pushes it away. Greedy acts played the mean, which praise then leaves where it is.
+//
 // Remembering costs a copy of the active features per update, so an agent starts remembering at its
 // first judgement (praise 0 arms it without judging) and keeps doing so; the memory is not saved.
 #pragma once
@@ -36,12 +41,16 @@ public:
 
     bool armed() const { return armed_; }
     void arm() { armed_ = true; }
-    // Room for remember() with `features` active features: it then allocates nothing.
-    void reserve(std::size_t features);
-    // The act chosen `dt` seconds after the previous one: `action` at the features `phi`.
-    void remember(float dt, std::uint32_t action, const std::vector<ActiveFeature>& phi) noexcept;
+    // Room for remember() with `features` active features and `continuousColumns` gradients (the
+    // agent's continuous actions' columns, the same on every call): it then allocates nothing.
+    void reserve(std::size_t features, std::uint32_t continuousColumns = 0);
+    // The act chosen `dt` seconds after the previous one: `action` at the features `phi`, and the
+    // continuous columns' gradients (nullptr: none, or 0s).
+    void remember(float dt, std::uint32_t action, const std::vector<ActiveFeature>& phi,
+                  const float* continuous = nullptr) noexcept;
     // Moves the remembered acts' preferences by rate * praise * activation (kept within `range`);
-    // a combined action's, each branch's chosen neuron (core/action_branches.hpp). Allocates its
+    // a combined action's, each branch's chosen neuron (core/action_branches.hpp); the continuous
+    // columns (after the branches' columns) along their remembered gradients. Allocates its
     // scratch before changing any weight.
     void credit(WeightTable& w, float praise, float rate, const PolicyRange& range, const ActionBranches& branches);
     std::size_t acts() const { return acts_.size() - first_; }
@@ -58,8 +67,18 @@ private:
         std::uint32_t action;
         float activation;
     };
+    struct ContinuousCredit {
+        std::uint32_t feature;
+        std::uint32_t column;
+        float activation;
+        float gradient;
+    };
     void forgetBefore(double time) noexcept;
     void compact() noexcept;
+    // core/continuous_praise.cpp: the remembered acts' continuous credits into continuousScratch_
+    // (may throw: called before any weight changes), then applied from column `firstColumn` on.
+    void gatherContinuous();
+    void creditContinuous(WeightTable& w, float praise, float rate, std::uint32_t firstColumn) noexcept;
 
     bool armed_ = false;
     double clock_ = 0.0;  // seconds of remembered updates
@@ -67,6 +86,9 @@ private:
     std::size_t first_ = 0;
     std::vector<ActiveFeature> pool_;  // their features; pool_[acts_[first_].begin..] in use
     std::vector<Credit> scratch_;
+    std::uint32_t continuousColumns_ = 0;
+    std::vector<float> gradients_;  // continuousColumns_ per act, parallel to acts_
+    std::vector<ContinuousCredit> continuousScratch_;
 };
 
 }  // namespace verve::core

@@ -3,10 +3,13 @@
 //   header  : magic "VERVEREC" | u32 format version | u32 0 | u64 payload bytes | u64 checksum
 //             of the payload (io::payloadChecksum, as binary saves)
 //   payload : u32 actions | u32 discrete sensors, then u32 values of each | u32 continuous sensors |
-//             u64 entries | u64 steps | u8 kind per entry (0 step, 1 end of trial, 2 truncation) |
-//             f32 reward per entry | f32 dt per step | u32 action per step | i32 discrete values
-//             per step | f32 continuous values per step
+//             [v2: u32 continuous actions] | u64 entries | u64 steps | [v2: u64 continuous steps] |
+//             u8 kind per entry (0 step, 1 end of trial, 2 truncation, 3 step with continuous
+//             actions, v2) | f32 reward per entry | f32 dt per step (either kind) | u32 action per
+//             step | i32 discrete values per step | f32 continuous values per step |
+//             [v2: f32 continuous actions per kind-3 step]
 //
+// Version 2 added the teacher's continuous actions; version 1 files load as recordings without them.
 // Loading checks the header, the checksum and that the counts add up to the payload's size
 // exactly before allocating anything, then adds every entry through Recording's own checks.
 #include <cstring>
@@ -25,7 +28,7 @@ namespace verve {
 namespace {
 
 constexpr char kMagic[8] = {'V', 'E', 'R', 'V', 'E', 'R', 'E', 'C'};
-constexpr std::uint32_t kVersion = 1;
+constexpr std::uint32_t kVersion = 2;
 constexpr std::size_t kHeaderBytes = 32;
 
 #ifdef FUZZING_BUILD_MODE_UNSAFE_FOR_PRODUCTION
@@ -83,14 +86,18 @@ std::string recordingToBytes(const Recording& r) {
     put(payload, static_cast<std::uint32_t>(r.discreteSensors().size()));
     for (std::uint32_t values : r.discreteSensors()) put(payload, values);
     put(payload, r.continuousSensors());
+    put(payload, r.continuousActions());
     put(payload, std::uint64_t{r.size()});
     put(payload, std::uint64_t{r.steps()});
+    const std::uint64_t continuousSteps = r.continuousActions() ? r.continuousActionValues().size() / r.continuousActions() : 0;
+    put(payload, continuousSteps);
     for (Recording::Kind k : r.kinds()) put(payload, static_cast<std::uint8_t>(k));
     putAll(payload, r.rewards());
     putAll(payload, r.dts());
     putAll(payload, r.actions());
     putAll(payload, r.discreteValues());
     putAll(payload, r.continuousValues());
+    putAll(payload, r.continuousActionValues());
     std::string out(kMagic, sizeof kMagic);
     put(out, kVersion);
     put(out, std::uint32_t{0});
@@ -125,18 +132,22 @@ Recording recordingFromBytes(const char* data, std::size_t size) {
     std::vector<std::uint32_t> discreteSensors(nd);
     for (auto& values : discreteSensors) values = in.take<std::uint32_t>("a discrete sensor");
     const auto nc = in.take<std::uint32_t>("the continuous sensors");
+    const auto nca = version >= 2 ? in.take<std::uint32_t>("the continuous actions") : 0u;
+    if (nca > DescriptorLimits::kMaxContinuousActions) fail(std::to_string(nca) + " continuous actions");
     const auto entries = in.take<std::uint64_t>("the entry count");
     const auto steps = in.take<std::uint64_t>("the step count");
-    if (entries > Recording::kMaxEntries || steps > entries) fail("bad entry or step count");
+    const auto continuousSteps = version >= 2 ? in.take<std::uint64_t>("the continuous step count") : 0u;
+    if (entries > Recording::kMaxEntries || steps > entries || continuousSteps > steps) fail("bad entry or step count");
+    if (nc > DescriptorLimits::kMaxSensors) fail(std::to_string(nc) + " continuous sensors");
     // Every count bounded above: the product fits 64 bits, and must be the bytes left, exactly.
-    const std::uint64_t expected = entries * 5 + steps * (8 + 4 * (std::uint64_t{nd} + nc));
+    const std::uint64_t expected = entries * 5 + steps * (8 + 4 * (std::uint64_t{nd} + nc)) + continuousSteps * 4 * nca;
     if (expected != in.remaining()) {
         fail(std::to_string(entries) + " entries and " + std::to_string(steps) + " steps need " + std::to_string(expected) +
              " bytes, the payload has " + std::to_string(in.remaining()));
     }
     Recording r = [&] {
         try {
-            return Recording(std::move(discreteSensors), nc, actions);
+            return Recording(std::move(discreteSensors), nc, actions, nca);
         } catch (const Error& e) {
             fail(e.what());
         }
@@ -147,9 +158,11 @@ Recording recordingFromBytes(const char* data, std::size_t size) {
     const char* acts = in.skip(steps * 4);
     const char* discrete = in.skip(steps * nd * 4);
     const char* continuous = in.skip(steps * nc * 4);
+    const char* continuousActions = in.skip(continuousSteps * nca * 4);
     std::vector<std::int32_t> d(nd);
     std::vector<float> c(nc);
-    std::uint64_t step = 0;
+    std::vector<float> ca(nca);
+    std::uint64_t step = 0, continuousStep = 0;
     for (std::uint64_t i = 0; i < entries; ++i) {
         const auto kind = static_cast<std::uint8_t>(kinds[i]);
         const float reward = at<float>(rewards, i);
@@ -158,10 +171,17 @@ Recording recordingFromBytes(const char* data, std::size_t size) {
                 r.addEndEpisode(reward);
             } else if (kind == 2) {
                 r.addTruncation(reward);
-            } else if (kind == 0 && step < steps) {
+            } else if ((kind == 0 || (kind == 3 && nca > 0 && continuousStep < continuousSteps)) && step < steps) {
                 for (std::uint32_t k = 0; k < nd; ++k) d[k] = at<std::int32_t>(discrete, step * nd + k);
                 for (std::uint32_t k = 0; k < nc; ++k) c[k] = at<float>(continuous, step * nc + k);
-                r.addStep(reward, ObservationView{d.data(), nd, c.data(), nc}, at<float>(dts, step), at<std::uint32_t>(acts, step));
+                const ObservationView obs{d.data(), nd, c.data(), nc};
+                if (kind == 3) {
+                    for (std::uint32_t k = 0; k < nca; ++k) ca[k] = at<float>(continuousActions, continuousStep * nca + k);
+                    r.addStep(reward, obs, at<float>(dts, step), at<std::uint32_t>(acts, step), ContinuousActionView{ca.data(), nca});
+                    ++continuousStep;
+                } else {
+                    r.addStep(reward, obs, at<float>(dts, step), at<std::uint32_t>(acts, step));
+                }
                 ++step;
             } else {
                 fail("entry " + std::to_string(i) + " has kind " + std::to_string(kind) + " (or more steps than counted)");
@@ -172,6 +192,9 @@ Recording recordingFromBytes(const char* data, std::size_t size) {
         }
     }
     if (step != steps) fail(std::to_string(steps) + " steps counted, " + std::to_string(step) + " found");
+    if (continuousStep != continuousSteps) {
+        fail(std::to_string(continuousSteps) + " steps with continuous actions counted, " + std::to_string(continuousStep) + " found");
+    }
     return r;
 }
 

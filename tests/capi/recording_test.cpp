@@ -129,7 +129,7 @@ TEST(Recording, BadEntriesDamagedFilesAndOtherAgentsAreRefusedAndChangeNothing) 
     EXPECT_EQ(verve_recording_load_memory(before.data(), before.size() - 3, &out), VERVE_ERROR_FORMAT);
     EXPECT_EQ(verve_recording_load_memory("VERVEBIN", 8, &out), VERVE_ERROR_FORMAT);
     std::string future = before;
-    future[8] = 2;  // format version 2
+    future[8] = 3;  // format version 3
     EXPECT_EQ(verve_recording_load_memory(future.data(), future.size(), &out), VERVE_ERROR_VERSION);
     EXPECT_EQ(out, nullptr);
 
@@ -150,3 +150,71 @@ TEST(Recording, BadEntriesDamagedFilesAndOtherAgentsAreRefusedAndChangeNothing) 
 }
 
 }  // namespace
+
+// The teacher's continuous actions (verve_agent_update_demonstrated_continuous and
+// verve_recording_add_step_continuous): recorded, saved and replayed as the live calls; wrong
+// counts, NULL, NaN and values outside [-1, 1] refused, changing nothing.
+TEST(Recording, ContinuousActionsAreRecordedReplayedAndChecked) {
+    verve_agent_desc d = petDesc(5);
+    d.num_actions = 2;
+    d.num_continuous_actions = 2;
+    verve_agent* direct = make(d);
+    verve_agent* replayed = make(d);
+    verve_recording* r = nullptr;
+    ASSERT_EQ(verve_recording_create(direct, &r), VERVE_OK) << verve_last_error();
+    for (int i = 0; i < 20; ++i) {
+        const int32_t disc = i % 4;
+        const float c[2] = {std::sin(0.3f * static_cast<float>(i)), -0.2f};
+        const float steer[2] = {c[0], i % 2 ? 1.0f : -1.0f};
+        const uint32_t action = static_cast<uint32_t>(i % 2);
+        ASSERT_EQ(verve_recording_add_step_continuous(r, -0.1f, &disc, 1, c, 2, 0.1f, action, steer, 2), VERVE_OK)
+            << verve_last_error();
+        ASSERT_EQ(verve_agent_update_demonstrated_continuous(direct, -0.1f, &disc, 1, c, 2, 0.1f, nullptr, 0, action, steer, 2),
+                  VERVE_OK)
+            << verve_last_error();
+        float played[2] = {0, 0};
+        ASSERT_EQ(verve_agent_get_continuous_action(direct, played, 2), VERVE_OK);
+        EXPECT_EQ(played[0], steer[0]);
+        EXPECT_EQ(played[1], steer[1]);
+    }
+    ASSERT_EQ(verve_recording_add_end_episode(r, 1.0f), VERVE_OK);
+    ASSERT_EQ(verve_agent_end_episode(direct, 1.0f), VERVE_OK);
+    const std::string bytes = recordingBytes(r);
+    verve_recording* loaded = nullptr;
+    ASSERT_EQ(verve_recording_load_memory(bytes.data(), bytes.size(), &loaded), VERVE_OK) << verve_last_error();
+    ASSERT_EQ(verve_agent_replay(replayed, loaded), VERVE_OK) << verve_last_error();
+    EXPECT_EQ(agentBytes(replayed), agentBytes(direct));
+
+    const std::string agentBefore = agentBytes(direct);
+    const int32_t disc = 0;
+    const float c[2] = {0.0f, 0.0f};
+    const float nan = std::numeric_limits<float>::quiet_NaN();
+    const float bad[][2] = {{nan, 0.0f}, {0.0f, 1.5f}, {-1.01f, 0.0f}};
+    for (const auto& values : bad) {
+        EXPECT_EQ(verve_agent_update_demonstrated_continuous(direct, 0.0f, &disc, 1, c, 2, 0.1f, nullptr, 0, 0, values, 2),
+                  VERVE_ERROR_INVALID_ARGUMENT);
+        EXPECT_NE(std::string(verve_last_error()).find("[-1, 1]"), std::string::npos) << verve_last_error();
+        EXPECT_EQ(verve_recording_add_step_continuous(r, 0.0f, &disc, 1, c, 2, 0.1f, 0, values, 2), VERVE_ERROR_INVALID_ARGUMENT);
+    }
+    const float one[2] = {0.5f, 0.5f};
+    EXPECT_EQ(verve_agent_update_demonstrated_continuous(direct, 0.0f, &disc, 1, c, 2, 0.1f, nullptr, 0, 0, one, 1),
+              VERVE_ERROR_INVALID_ARGUMENT);
+    EXPECT_EQ(verve_agent_update_demonstrated_continuous(direct, 0.0f, &disc, 1, c, 2, 0.1f, nullptr, 0, 0, nullptr, 2),
+              VERVE_ERROR_INVALID_ARGUMENT);
+    EXPECT_EQ(verve_recording_add_step_continuous(r, 0.0f, &disc, 1, c, 2, 0.1f, 0, one, 3), VERVE_ERROR_INVALID_ARGUMENT);
+    EXPECT_EQ(verve_recording_add_step_continuous(r, 0.0f, &disc, 1, c, 2, 0.1f, 0, nullptr, 2), VERVE_ERROR_INVALID_ARGUMENT);
+    EXPECT_EQ(verve_agent_update_demonstrated_continuous(nullptr, 0.0f, &disc, 1, c, 2, 0.1f, nullptr, 0, 0, one, 2),
+              VERVE_ERROR_INVALID_ARGUMENT);
+    EXPECT_EQ(agentBytes(direct), agentBefore);
+    EXPECT_EQ(recordingBytes(r), bytes);
+
+    // An agent with one continuous action cannot replay steps that hold two.
+    d.num_continuous_actions = 1;
+    verve_agent* other = make(d);
+    EXPECT_EQ(verve_agent_replay(other, r), VERVE_ERROR_INVALID_ARGUMENT);
+    verve_agent_destroy(other);
+    verve_recording_destroy(loaded);
+    verve_recording_destroy(r);
+    verve_agent_destroy(replayed);
+    verve_agent_destroy(direct);
+}

@@ -64,7 +64,7 @@ extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size) {
         const Visible before = visible(agent);
         verve_result r = VERVE_OK;
         bool changes = false;  // a successful call of this kind may change what visible() reports
-        switch (in.ConsumeIntegralInRange<int>(0, 19)) {
+        switch (in.ConsumeIntegralInRange<int>(0, 20)) {
             case 0:
             case 1:
             case 2: {
@@ -151,6 +151,28 @@ extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size) {
                 r = verve_agent_update_demonstrated(agent, anyFloat(in, -1.5f, 1.5f), o.discrete, o.numDiscrete, o.continuous,
                                                     o.numContinuous, anyFloat(in, 0.001f, 1.0f), masked ? mask : nullptr, n, action);
                 if (r == VERVE_OK) VERVE_FUZZ_CHECK(action < d.num_actions && (!masked || (n <= 64 && verve_fuzz::maskAllows(d, mask, action))));
+                changes = true;
+                break;
+            }
+            case 20: {  // a demonstrated step with the teacher's continuous actions: right count, each in
+                        // [-1, 1], else refused (changing nothing); accepted values are played back
+                const verve_fuzz::Observation o = verve_fuzz::anyObservation(in, d);
+                const uint32_t n = static_cast<uint32_t>(d.num_continuous_actions);
+                const uint32_t count = in.ConsumeBool() ? n : in.ConsumeIntegralInRange<uint32_t>(0, 10);
+                std::vector<float> values(count);
+                for (float& v : values) v = anyFloat(in, -1.0f, 1.0f);
+                const uint32_t action = in.ConsumeBool() ? in.ConsumeIntegralInRange<uint32_t>(0, d.num_actions - 1) : in.ConsumeIntegral<uint32_t>();
+                r = verve_agent_update_demonstrated_continuous(agent, anyFloat(in, -1.5f, 1.5f), o.discrete, o.numDiscrete,
+                                                               o.continuous, o.numContinuous, anyFloat(in, 0.001f, 1.0f), nullptr, 0,
+                                                               action, values.empty() ? nullptr : values.data(), count);
+                if (r == VERVE_OK) {
+                    VERVE_FUZZ_CHECK(count == n && action < d.num_actions);
+                    std::vector<float> played(n);
+                    if (n > 0) {
+                        VERVE_FUZZ_CHECK(verve_agent_get_continuous_action(agent, played.data(), n) == VERVE_OK);
+                        for (uint32_t k = 0; k < n; ++k) VERVE_FUZZ_CHECK(values[k] >= -1.0f && values[k] <= 1.0f && played[k] == values[k]);
+                    }
+                }
                 changes = true;
                 break;
             }

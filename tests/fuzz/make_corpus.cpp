@@ -92,8 +92,16 @@ int main(int argc, char** argv) {
                 const int32_t discrete[2] = {step % 2, step % 3};
                 const float x = 0.2f * static_cast<float>(step) - 0.7f;
                 const float continuous[6] = {x, -0.4f, 0.5f * x, 0.1f, -x, 0.6f};
-                verve_recording_add_step(recording, step % 3 == 2 ? 0.5f : 0.0f, discrete, d.num_discrete_sensors,
-                                         continuous, d.num_continuous_sensors, 0.1f, static_cast<uint32_t>(step) % d.num_actions);
+                const float steer[2] = {-x, step % 2 ? 1.0f : -0.5f};  // the teacher's, where the agent has continuous actions
+                if (d.num_continuous_actions > 0 && step % 4 != 3) {
+                    verve_recording_add_step_continuous(recording, step % 3 == 2 ? 0.5f : 0.0f, discrete, d.num_discrete_sensors,
+                                                        continuous, d.num_continuous_sensors, 0.1f,
+                                                        static_cast<uint32_t>(step) % d.num_actions, steer,
+                                                        static_cast<uint32_t>(d.num_continuous_actions));
+                } else {
+                    verve_recording_add_step(recording, step % 3 == 2 ? 0.5f : 0.0f, discrete, d.num_discrete_sensors,
+                                             continuous, d.num_continuous_sensors, 0.1f, static_cast<uint32_t>(step) % d.num_actions);
+                }
                 if (step == 4) verve_recording_add_truncation(recording, -0.1f);
             }
             verve_recording_add_end_episode(recording, 1.0f);

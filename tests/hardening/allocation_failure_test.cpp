@@ -38,6 +38,11 @@ public:
             const int32_t disc = i % 3;
             const float c[2] = {std::sin(0.9f * static_cast<float>(i)), std::cos(0.4f * static_cast<float>(i))};
             uint32_t action = 0;
+            if (i % 8 == 1 && desc_.num_continuous_actions > 0) {  // with the teacher's continuous actions
+                const float steer[2] = {c[0], i % 16 == 1 ? 1.0f : -0.5f};
+                return verve_agent_update_demonstrated_continuous(agent_, -0.1f, &disc, 1, c, 2, 0.1f, nullptr, 0,
+                                                                  static_cast<uint32_t>(i % 2), steer, 2);
+            }
             if (i % 4 == 1) {  // a demonstrated step (docs/teaching.md)
                 return verve_agent_update_demonstrated(agent_, i % 9 == 0 ? 1.0f : -0.1f, &disc, 1, c, 2, 0.1f, nullptr, 0,
                                                        static_cast<uint32_t>(i % 2));
@@ -150,7 +155,8 @@ TEST(AllocationFailure, EveryFailedAllocationLeavesAnAgentWithActionBranchesAsIt
     sweep(d);
 }
 
-// Continuous actions: their columns' traces and clamps, their values and noise.
+// Continuous actions: their columns' traces and clamps, their values and noise, demonstrated values
+// and the teacher's memory of their gradients.
 TEST(AllocationFailure, EveryFailedAllocationLeavesAnAgentWithContinuousActionsAsItWas) {
     verve_agent_desc d = mixedDesc(false, 13);
     d.num_continuous_actions = 2;

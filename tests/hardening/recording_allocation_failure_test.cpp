@@ -1,5 +1,5 @@
 // Allocation failure in recordings (docs/teaching.md, "Recordings"): a fixed scenario (make a
-// recording shaped like an agent, record steps and trial ends, save it to memory and load it back,
+// recording shaped like an agent, record steps (half with continuous actions) and trial ends, save it to memory and load it back,
 // replay it into a fresh agent) runs once for every N, with the N-th allocation failing. The call
 // that meets the failure returns VERVE_ERROR_OUT_OF_MEMORY; a refused add leaves the recording as it
 // was; a replay stopped part-way keeps what it replayed (documented), so the scenario retries it
@@ -24,6 +24,11 @@ std::string recordingBytes(const verve_recording* r) {
     return bytes;
 }
 
+verve_agent_desc withContinuousActions(verve_agent_desc d) {
+    d.num_continuous_actions = 2;  // half the steps carry the teacher's values
+    return d;
+}
+
 class Scenario {
 public:
     explicit Scenario(CountingAllocator& allocator) : allocator_(allocator) {}
@@ -43,6 +48,11 @@ public:
             if (i == 25) return verve_recording_add_truncation(recording_, -0.5f);
             const int32_t disc = i % 3;
             const float c[2] = {std::sin(0.9f * static_cast<float>(i)), std::cos(0.4f * static_cast<float>(i))};
+            if (i % 2 == 0) {  // with the teacher's continuous actions
+                const float steer[2] = {c[1], i % 4 == 0 ? 1.0f : -1.0f};
+                return verve_recording_add_step_continuous(recording_, -0.1f, &disc, 1, c, 2, 0.1f, static_cast<uint32_t>(i % 3),
+                                                           steer, 2);
+            }
             return verve_recording_add_step(recording_, i % 9 == 0 ? 1.0f : -0.1f, &disc, 1, c, 2, 0.1f,
                                             static_cast<uint32_t>(i % 3));
         }
@@ -85,7 +95,7 @@ public:
 
 private:
     CountingAllocator& allocator_;
-    verve_agent_desc desc_ = mixedDesc(false, 5);
+    verve_agent_desc desc_ = withContinuousActions(mixedDesc(false, 5));
     verve_agent* shape_ = nullptr;
     verve_agent* learner_ = nullptr;
     verve_recording* recording_ = nullptr;

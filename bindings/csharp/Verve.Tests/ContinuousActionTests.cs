@@ -213,5 +213,55 @@ namespace Verve.Tests
             Assert.InRange(throttle, 0f, 1f);
             Assert.Equal(1, car.Options.Actions);
         }
+
+        // A teacher's continuous actions (docs/teaching.md): the reach (x moves by 0.1 a, every step costs |x|)
+        // shown for 10 episodes by a driver steering back to 0 points the greedy action back; the same steps
+        // recorded and replayed train an agent to the same bytes; bad values are refused and change nothing.
+        [Fact]
+        public void DemonstratedContinuousActionsTeachTheReachAndRecord()
+        {
+            var options = new AgentOptions { Actions = 0, ContinuousActions = 1, Seed = 1 }.AddContinuousSensor();
+            using var shown = new Agent(options);
+            using var replayed = new Agent(options);
+            using var recording = new Recording(shown);
+            uint state = 12345;
+            float Uniform() { state = state * 1664525u + 1013904223u; return (state >> 8) / 16777216f * 2f - 1f; }
+            var value = new float[1];
+            for (int episode = 0; episode < 10; episode++)
+            {
+                float x = Uniform(), reward = 0f;
+                for (int t = 0; t < 100; t++)
+                {
+                    value[0] = Math.Clamp(-10f * x, -1f, 1f);
+                    shown.UpdateDemonstratedContinuous(reward, default, new[] { x }, 0.05f, 0, value);
+                    recording.AddStepContinuous(reward, default, new[] { x }, 0.05f, 0, value);
+                    Assert.Equal(value, shown.ContinuousAction);
+                    x = Math.Clamp(x + 0.1f * value[0], -1f, 1f);
+                    reward = -Math.Abs(x);
+                }
+                shown.TruncateEpisode(reward);
+                recording.AddTruncation(reward);
+            }
+            using (var loaded = Recording.LoadFromBytes(recording.SaveToBytes())) replayed.Replay(loaded);
+            Assert.Equal(shown.SaveToBinaryBytes(), replayed.SaveToBinaryBytes());
+
+            byte[] before = replayed.SaveToBinaryBytes();
+            foreach (float[] bad in new[] { new[] { 1.5f }, new[] { float.NaN }, new[] { 0.1f, 0.2f }, Array.Empty<float>() })
+            {
+                Assert.Throws<VerveException>(() => replayed.UpdateDemonstratedContinuous(0f, default, new[] { 0f }, 0.05f, 0, bad));
+                Assert.Throws<VerveException>(() => recording.AddStepContinuous(0f, default, new[] { 0f }, 0.05f, 0, bad));
+            }
+            Assert.Equal(before, replayed.SaveToBinaryBytes());
+
+            shown.Learning = false;
+            shown.ActionSelection = ActionSelection.Greedy;
+            float GreedyAt(float x)
+            {
+                shown.ResetShortTermMemory();
+                shown.Update(0f, default, new[] { x }, 0.05f);
+                return shown.ContinuousAction[0];
+            }
+            Assert.True(GreedyAt(-0.6f) > 0.5f && GreedyAt(0.6f) < -0.5f, $"greedy {GreedyAt(-0.6f)} at -0.6, {GreedyAt(0.6f)} at 0.6");
+        }
     }
 }

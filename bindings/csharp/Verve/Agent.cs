@@ -114,6 +114,36 @@ namespace Verve
             }
         }
 
+        /// <summary>As <see cref="UpdateDemonstrated"/>, with the continuous actions the host played too (docs/teaching.md):
+        /// the agent learns from them as from values it drew itself and is pulled towards them;
+        /// <see cref="GetContinuousAction(Span{float})"/> then reads them back.</summary>
+        /// <param name="reward">What the previous action earned.</param>
+        /// <param name="discrete">One value per discrete sensor, each in [0, its value count).</param>
+        /// <param name="continuous">One value per continuous sensor, in [-1, 1].</param>
+        /// <param name="dt">Seconds since the previous step, &gt; 0.</param>
+        /// <param name="action">The action the host took, in [0, <see cref="AgentOptions.Actions"/>).</param>
+        /// <param name="continuousAction">One value per continuous action (<see cref="AgentOptions.ContinuousActions"/>),
+        /// each in [-1, 1].</param>
+        /// <param name="allowed">Empty for every action, or one flag per action as in the masked <c>Update</c>.</param>
+        /// <exception cref="ArgumentOutOfRangeException"><paramref name="action"/> is negative.</exception>
+        /// <exception cref="VerveException">As <see cref="UpdateDemonstrated"/>, or a wrong count of continuous values,
+        /// NaN or a value outside [-1, 1] (nothing changes).</exception>
+        public unsafe void UpdateDemonstratedContinuous(float reward, ReadOnlySpan<int> discrete, ReadOnlySpan<float> continuous,
+            float dt, int action, ReadOnlySpan<float> continuousAction, ReadOnlySpan<byte> allowed = default)
+        {
+            if (action < 0) throw new ArgumentOutOfRangeException(nameof(action), action, "an action is an index from 0");
+            AgentHandle handle = Handle;
+            fixed (int* d = &MemoryMarshal.GetReference(discrete))
+            fixed (float* c = &MemoryMarshal.GetReference(continuous))
+            fixed (byte* m = &MemoryMarshal.GetReference(allowed))
+            fixed (float* v = &MemoryMarshal.GetReference(continuousAction))
+            {
+                VerveException.ThrowIfFailed(NativeMethods.verve_agent_update_demonstrated_continuous(handle, reward,
+                    d, (uint)discrete.Length, c, (uint)continuous.Length, dt, m, (uint)allowed.Length, (uint)action,
+                    v, (uint)continuousAction.Length));
+            }
+        }
+
         /// <summary>A teacher's judgement (docs/teaching.md): <paramref name="praise"/> in [-1, 1] (1 good, -1 bad) of
         /// what the agent did over the last 2.5 s; it moves the actor's preferences for those acts and is not a reward.
         /// The agent remembers its acts from its first judgement on (0 arms the memory without judging); not saved.</summary>

@@ -41,6 +41,25 @@ namespace Verve
             }
         }
 
+        /// <summary>One demonstrated step with the host's continuous actions, as
+        /// <see cref="Agent.UpdateDemonstratedContinuous"/> takes it (no mask).</summary>
+        /// <exception cref="ArgumentOutOfRangeException"><paramref name="action"/> is negative.</exception>
+        /// <exception cref="VerveException">As <see cref="AddStep"/>, or a wrong count of continuous values, NaN or a
+        /// value outside [-1, 1].</exception>
+        public unsafe void AddStepContinuous(float reward, ReadOnlySpan<int> discrete, ReadOnlySpan<float> continuous, float dt,
+            int action, ReadOnlySpan<float> continuousAction)
+        {
+            if (action < 0) throw new ArgumentOutOfRangeException(nameof(action), action, "an action is an index from 0");
+            RecordingHandle handle = Handle;
+            fixed (int* d = &MemoryMarshal.GetReference(discrete))
+            fixed (float* c = &MemoryMarshal.GetReference(continuous))
+            fixed (float* v = &MemoryMarshal.GetReference(continuousAction))
+            {
+                VerveException.ThrowIfFailed(NativeMethods.verve_recording_add_step_continuous(handle, reward,
+                    d, (uint)discrete.Length, c, (uint)continuous.Length, dt, (uint)action, v, (uint)continuousAction.Length));
+            }
+        }
+
         /// <summary>A trial's real end, as <see cref="Agent.EndEpisode"/> takes it.</summary>
         public void AddEndEpisode(float finalReward) =>
             VerveException.ThrowIfFailed(NativeMethods.verve_recording_add_end_episode(Handle, finalReward));

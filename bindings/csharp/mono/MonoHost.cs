@@ -284,6 +284,30 @@ static class MonoHost
             }
         });
 
+        Check("Agent.UpdateDemonstratedContinuous(Single, ReadOnlySpan<Int32>, ReadOnlySpan<Single>, Single, Int32, ReadOnlySpan<Single>, ReadOnlySpan<Byte>); " +
+              "Recording.AddStepContinuous(Single, ReadOnlySpan<Int32>, ReadOnlySpan<Single>, Single, Int32, ReadOnlySpan<Single>)", () =>
+        {
+            var options = new AgentOptions { Actions = 0, ContinuousActions = 2, Seed = 4 }.AddContinuousSensor(false);
+            using (var shown = new Agent(options))
+            using (var replayed = new Agent(options))
+            using (var recording = new Recording(shown))
+            {
+                for (int i = 0; i < 12; ++i)
+                {
+                    float[] c = { 0.1f * i - 0.5f };
+                    float[] steer = { -c[0], i % 2 == 0 ? 1f : -1f };
+                    shown.UpdateDemonstratedContinuous(-0.1f, ReadOnlySpan<int>.Empty, c, 0.1f, 0, steer, ReadOnlySpan<byte>.Empty);
+                    recording.AddStepContinuous(-0.1f, ReadOnlySpan<int>.Empty, c, 0.1f, 0, steer);
+                    Require(shown.ContinuousAction.SequenceEqual(steer), "the demonstrated values are not played back");
+                }
+                Expect<VerveException>(() => shown.UpdateDemonstratedContinuous(0f, ReadOnlySpan<int>.Empty, new[] { 0f }, 0.1f, 0,
+                                                                                 new[] { 2f, 0f }, ReadOnlySpan<byte>.Empty));
+                Expect<VerveException>(() => recording.AddStepContinuous(0f, ReadOnlySpan<int>.Empty, new[] { 0f }, 0.1f, 0, new[] { 0f }));
+                using (var loaded = Recording.LoadFromBytes(recording.SaveToBytes())) replayed.Replay(loaded);
+                Require(replayed.SaveToBinaryBytes().SequenceEqual(shown.SaveToBinaryBytes()), "a replayed recording trains otherwise");
+            }
+        });
+
         Check("ValueAxis.Continuous(Int32, Int32); ValueAxis.Discrete(Int32, Int32); ValueAxis.get_Kind(); ValueAxis.get_Index(); " +
               "ValueAxis.get_Samples(); ValueAxis.Equals(ValueAxis); ValueAxis.Equals(Object); ValueAxis.GetHashCode(); ValueAxis.ToString()", () =>
         {

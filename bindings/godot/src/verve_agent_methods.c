@@ -154,6 +154,45 @@ VG_METHOD(update_demonstrated) {
     return vg_step(user_data, "update_demonstrated", argc, argv, VG_DEMONSTRATED);
 }
 
+/* update_demonstrated_continuous(reward, discrete, continuous, dt, action, values [, mask]): the
+ * host's continuous actions too (docs/teaching.md). */
+VG_METHOD(update_demonstrated_continuous) {
+    vg_call c;
+    verve_agent* a;
+    float reward = 0.0f, dt = 0.0f;
+    int32_t discrete[VERVE_MAX_DISCRETE_SENSORS];
+    float continuous[VERVE_MAX_CONTINUOUS_SENSORS], values[VERVE_MAX_CONTINUOUS_ACTIONS];
+    int32_t flags[VG_MAX_ACTIONS];
+    uint8_t mask[VG_MAX_ACTIONS];
+    uint32_t n_discrete = 0, n_continuous = 0, n_values = 0, n_mask = 0, i;
+    int64_t shown = 0;
+    VG_UNUSED;
+    if (!vg_begin(&c, user_data, "update_demonstrated_continuous", argc, argv, 6, 7) || !vg_agent_handle(&c, &a) ||
+        !vg_arg_float(&c, 0, "reward", &reward) ||
+        !vg_read_ints(&c, argv[1], "discrete", discrete, VERVE_MAX_DISCRETE_SENSORS, &n_discrete) ||
+        !vg_read_floats(&c, argv[2], "continuous", continuous, VERVE_MAX_CONTINUOUS_SENSORS, &n_continuous) ||
+        !vg_arg_float(&c, 3, "dt", &dt) || !vg_arg_type(&c, 4, "action", GODOT_VARIANT_TYPE_INT) ||
+        !vg_read_floats(&c, argv[5], "continuous_action", values, VERVE_MAX_CONTINUOUS_ACTIONS, &n_values) ||
+        (argc == 7 && !vg_read_ints(&c, argv[6], "mask", flags, VG_MAX_ACTIONS, &n_mask)))
+        return vg_variant_bool(0);
+    for (i = 0; i < n_mask; ++i) {
+        if (flags[i] != 0 && flags[i] != 1) {
+            vg_fail(&c, "mask[%u] must be 0 or 1 (got %d)", i, (int)flags[i]);
+            return vg_variant_bool(0);
+        }
+        mask[i] = (uint8_t)flags[i];
+    }
+    shown = vg_core->godot_variant_as_int(argv[4]);
+    if (shown < 0 || shown > (int64_t)UINT32_MAX) {
+        vg_fail(&c, "action must be 0 .. actions-1 (got %lld)", (long long)shown);
+        return vg_variant_bool(0);
+    }
+    return vg_variant_bool(vg_check(&c, verve_agent_update_demonstrated_continuous(
+                                            a, reward, discrete, n_discrete, continuous, n_continuous, dt,
+                                            argc == 7 ? mask : NULL, argc == 7 ? n_mask : 0, (uint32_t)shown, values,
+                                            n_values)));
+}
+
 VG_METHOD(teach) {
     vg_call c;
     verve_agent* a;

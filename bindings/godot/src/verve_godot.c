@@ -18,7 +18,7 @@ typedef struct vg_arg_info {
     godot_variant_type type;
 } vg_arg_info;
 
-#define VG_MAX_ARGS 6 /* the most any method takes (update_demonstrated with its mask) */
+#define VG_MAX_ARGS 7 /* the most any method takes (update_demonstrated_continuous with its mask) */
 
 typedef struct vg_method_info {
     const char* name;
@@ -65,6 +65,18 @@ static const vg_method_info vg_agent_methods[] = {
       {"continuous", GODOT_VARIANT_TYPE_POOL_REAL_ARRAY},
       {"dt", GODOT_VARIANT_TYPE_REAL},
       {"action", GODOT_VARIANT_TYPE_INT},
+      {"mask", GODOT_VARIANT_TYPE_POOL_INT_ARRAY}}},
+    {"update_demonstrated_continuous", vg_update_demonstrated_continuous,
+     "update_demonstrated() with the continuous actions the player or a scripted AI played too (one per "
+     "continuous action, each in [-1, 1]; docs/teaching.md): the agent learns from them and is pulled towards them, "
+     "and get_continuous_action() reads them back. -> bool",
+     7,
+     {{"reward", GODOT_VARIANT_TYPE_REAL},
+      {"discrete", GODOT_VARIANT_TYPE_POOL_INT_ARRAY},
+      {"continuous", GODOT_VARIANT_TYPE_POOL_REAL_ARRAY},
+      {"dt", GODOT_VARIANT_TYPE_REAL},
+      {"action", GODOT_VARIANT_TYPE_INT},
+      {"continuous_action", GODOT_VARIANT_TYPE_POOL_REAL_ARRAY},
       {"mask", GODOT_VARIANT_TYPE_POOL_INT_ARRAY}}},
     {"replay", vg_replay,
      "Every entry of a VerveRecording into the agent, in order, as demonstrated steps and trial ends; the agent "
@@ -191,6 +203,16 @@ static const vg_method_info vg_recording_methods[] = {
       {"continuous", GODOT_VARIANT_TYPE_POOL_REAL_ARRAY},
       {"dt", GODOT_VARIANT_TYPE_REAL},
       {"action", GODOT_VARIANT_TYPE_INT}}},
+    {"add_step_continuous", vg_recording_add_step_continuous,
+     "Records a demonstrated step as VerveAgent.update_demonstrated_continuous() takes it (no mask); a refused one "
+     "is not recorded. -> bool",
+     6,
+     {{"reward", GODOT_VARIANT_TYPE_REAL},
+      {"discrete", GODOT_VARIANT_TYPE_POOL_INT_ARRAY},
+      {"continuous", GODOT_VARIANT_TYPE_POOL_REAL_ARRAY},
+      {"dt", GODOT_VARIANT_TYPE_REAL},
+      {"action", GODOT_VARIANT_TYPE_INT},
+      {"continuous_action", GODOT_VARIANT_TYPE_POOL_REAL_ARRAY}}},
     {"add_end_episode", vg_recording_add_end_episode, "Records the end of a trial with its final reward. -> bool", 1,
      {{"final_reward", GODOT_VARIANT_TYPE_REAL}}},
     {"add_truncation", vg_recording_add_truncation, "Records a trial cut off at a time limit. -> bool", 1,

@@ -77,6 +77,32 @@ VG_METHOD(add_step) {
                                                                  n_continuous, dt, (uint32_t)action)));
 }
 
+VG_METHOD(add_step_continuous) {
+    vg_call c;
+    verve_recording* r;
+    float reward = 0.0f, dt = 0.0f;
+    int32_t discrete[VERVE_MAX_DISCRETE_SENSORS];
+    float continuous[VERVE_MAX_CONTINUOUS_SENSORS], values[VERVE_MAX_CONTINUOUS_ACTIONS];
+    uint32_t n_discrete = 0, n_continuous = 0, n_values = 0;
+    int64_t action;
+    VG_UNUSED;
+    if (!vg_begin_recording(&c, user_data, "add_step_continuous", argc, argv, 6, 6) ||
+        !vg_recording_handle(&c, user_data, &r) || !vg_arg_float(&c, 0, "reward", &reward) ||
+        !vg_read_ints(&c, argv[1], "discrete", discrete, VERVE_MAX_DISCRETE_SENSORS, &n_discrete) ||
+        !vg_read_floats(&c, argv[2], "continuous", continuous, VERVE_MAX_CONTINUOUS_SENSORS, &n_continuous) ||
+        !vg_arg_float(&c, 3, "dt", &dt) || !vg_arg_type(&c, 4, "action", GODOT_VARIANT_TYPE_INT) ||
+        !vg_read_floats(&c, argv[5], "continuous_action", values, VERVE_MAX_CONTINUOUS_ACTIONS, &n_values))
+        return vg_variant_bool(0);
+    action = vg_core->godot_variant_as_int(argv[4]);
+    if (action < 0 || action > (int64_t)UINT32_MAX) {
+        vg_fail(&c, "action must be 0 .. actions-1 (got %lld)", (long long)action);
+        return vg_variant_bool(0);
+    }
+    return vg_variant_bool(vg_check(&c, verve_recording_add_step_continuous(r, reward, discrete, n_discrete, continuous,
+                                                                            n_continuous, dt, (uint32_t)action, values,
+                                                                            n_values)));
+}
+
 VG_METHOD(add_end_episode) {
     vg_call c;
     verve_recording* r;

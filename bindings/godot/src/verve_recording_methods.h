@@ -19,6 +19,7 @@ void vg_recording_destroy(void* instance);
                                       godot_variant** argv);
 VG_DECLARE(create)
 VG_DECLARE(add_step)
+VG_DECLARE(add_step_continuous)
 VG_DECLARE(add_end_episode)
 VG_DECLARE(add_truncation)
 VG_DECLARE(get_size)

@@ -3,13 +3,16 @@
 # get_continuous_action() gives the latest update's values, each in [-1, 1], the same ones again when
 # greedy; saves keep them and their exploration noise, so a loaded agent's next values are the
 # saved one's; brains and the VerveAgentNode node (Extra Options) take them; every refusal returns
-# false or null with the plugin's or the library's message and changes nothing.
+# false or null with the plugin's or the library's message and changes nothing. A teacher's values
+# (update_demonstrated_continuous, VerveRecording.add_step_continuous) are played back, teach the 1-D
+# reach, record and replay to the same bytes, and bad ones are refused.
 #   godot3-server --path build/godot/tests --script res://test_continuous_actions.gd   (exit code 1 on a failure)
 extends "res://checks.gd"
 
 const VerveAgent = preload("res://addons/verve/verve_agent.gdns")
 const VerveBrain = preload("res://addons/verve/verve_brain.gdns")
 const AgentNode = preload("res://addons/verve/verve_agent_node.gd")
+const VerveRecording = preload("res://addons/verve/verve_recording.gdns")
 
 
 func driver(extra = {}):
@@ -175,6 +178,54 @@ func test_refusals():
 	check(within_bounds(agent.get_continuous_action(), 2), "the agent still answers")
 
 
+# The reach: x moves by 0.1 a, every step costs |x|; a driver steers back to 0 (a = -10 x within [-1, 1]).
+func test_demonstrated_values():
+	var options = {"continuous_sensor_circular": [false], "continuous_actions": 1, "seed": 1}
+	var shown = new_agent(options)
+	var rec = VerveRecording.new()
+	check(rec.create(shown), "VerveRecording.create: " + rec.get_last_error())
+	var start = 0.37
+	for episode in range(10):
+		start = fmod(start * 7.13 + 0.41, 1.0)
+		var x = start * 2.0 - 1.0
+		var reward = 0.0
+		for t in range(100):
+			var a = PoolRealArray([clamp(-10.0 * x, -1.0, 1.0)])
+			check(shown.update_demonstrated_continuous(reward, [], PoolRealArray([x]), 0.05, 0, a),
+				"update_demonstrated_continuous: " + shown.get_last_error())
+			check(rec.add_step_continuous(reward, [], PoolRealArray([x]), 0.05, 0, a), "add_step_continuous: " + rec.get_last_error())
+			check(same(shown.get_continuous_action(), a), "the teacher's value is played back")
+			x = clamp(x + 0.1 * a[0], -1.0, 1.0)
+			reward = -abs(x)
+		shown.truncate_episode(reward)
+		rec.add_truncation(reward)
+	var replayed = new_agent(options)
+	var copy = VerveRecording.new()
+	check(copy.load_bytes(rec.save_bytes()), "load_bytes: " + copy.get_last_error())
+	check(replayed.replay(copy), "replay: " + replayed.get_last_error())
+	check(replayed.save_bytes() == shown.save_bytes(), "a replayed recording trains the same agent")
+
+	var before = replayed.save_bytes()
+	for bad in [[PoolRealArray([1.5]), "within [-1, 1]"], [PoolRealArray([0.1, 0.2]), "has 2 values, the agent has 1"]]:
+		check_error(replayed, replayed.update_demonstrated_continuous(0.0, [], PoolRealArray([0.0]), 0.05, 0, bad[0]), false,
+			bad[1], "update_demonstrated_continuous(%s)" % [bad[0]])
+		check_error(rec, rec.add_step_continuous(0.0, [], PoolRealArray([0.0]), 0.05, 0, bad[0]), false, bad[1],
+			"add_step_continuous(%s)" % [bad[0]])
+	check_error(replayed, replayed.update_demonstrated_continuous(0.0, [], PoolRealArray([0.0]), 0.05, 0), false,
+		"takes 6 to 7 arguments", "update_demonstrated_continuous without values")
+	check(replayed.save_bytes() == before, "refused calls change nothing")
+
+	shown.learning = false
+	shown.greedy = true
+	var greedy = []
+	for x in [-0.6, 0.6]:
+		shown.reset_short_term_memory()
+		shown.update(0.0, [], PoolRealArray([x]), 0.05)
+		greedy.append(shown.get_continuous_action()[0])
+	print("  after 10 demonstrated episodes: greedy %.3f at x = -0.6, %.3f at +0.6" % greedy)
+	check(greedy[0] > 0.5 and greedy[1] < -0.5, "the demonstrations taught the reach: %s" % [greedy])
+
+
 func _init():
 	test_options()
 	test_values()
@@ -182,5 +233,6 @@ func _init():
 	test_saves_and_brains()
 	test_doc_driver()
 	test_refusals()
+	test_demonstrated_values()
 	report("verve godot continuous actions")
 	quit()

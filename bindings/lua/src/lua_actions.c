@@ -132,3 +132,21 @@ int lv_continuous_action(lua_State* L) {
     }
     return 1;
 }
+
+uint32_t lv_read_continuous_values(lua_State* L, int idx, const char* fn, float* out) {
+    size_t n, i;
+    if (lua_type(L, idx) != LUA_TTABLE)
+        return (uint32_t)luaL_error(L, "verve: %s: continuous values must be a list of numbers like {0.5, -1}", fn);
+    n = lua_rawlen(L, idx);
+    if (n > VERVE_MAX_CONTINUOUS_ACTIONS)
+        return (uint32_t)luaL_error(L, "verve: %s: %d continuous values; an agent has at most %d", fn, (int)n,
+                                    VERVE_MAX_CONTINUOUS_ACTIONS);
+    for (i = 0; i < n; ++i) {
+        lua_rawgeti(L, idx, (int)i + 1);
+        if (lua_type(L, -1) != LUA_TNUMBER)
+            return (uint32_t)luaL_error(L, "verve: %s: continuous value %d must be a number", fn, (int)i + 1);
+        out[i] = lv_to_float(lua_tonumber(L, -1));
+        lua_pop(L, 1);
+    }
+    return (uint32_t)n;
+}

@@ -30,5 +30,9 @@ int lv_join_action(lua_State* L);
 /* agent:continuous_action([t]) -> t: the latest update's continuous actions as t[1..n], filled into
  * t when given (nothing allocated per frame), else a new list; {} without continuous actions. */
 int lv_continuous_action(lua_State* L);
+/* A teacher's continuous actions at idx, a list of numbers {v1, v2, ...} read raw (no metamethod
+ * runs), into out (room for VERVE_MAX_CONTINUOUS_ACTIONS); returns the count. A non-list, a non-number
+ * or more values than any agent has is a Lua error naming `fn`; the library checks count and range. */
+uint32_t lv_read_continuous_values(lua_State* L, int idx, const char* fn, float* out);
 
 #endif

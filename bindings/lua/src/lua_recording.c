@@ -4,6 +4,7 @@
 
 #include <lauxlib.h>
 
+#include "lua_actions.h"
 #include "lua_recording.h"
 #include "lua_shared.h"
 
@@ -69,6 +70,25 @@ static int lv_add_step(lua_State* L) {
     r = verve_recording_add_step(lv_open_recording(L, 1), reward, o.discrete, o.n_discrete, o.continuous,
                                  o.n_continuous, dt, action - 1);
     if (r != VERVE_OK) return lv_fail_indexed(L, "add_step", r);
+    return 0;
+}
+
+/* rec:add_step_continuous(reward, obs, dt, action, values) */
+static int lv_add_step_continuous(lua_State* L) {
+    float reward, dt, values[VERVE_MAX_CONTINUOUS_ACTIONS];
+    uint32_t action = 0, count;
+    lv_obs o;
+    verve_result r;
+    luaL_checkudata(L, 1, LV_RECORDING_MT);
+    reward = lv_to_float(luaL_checknumber(L, 2));
+    dt = lv_to_float(luaL_checknumber(L, 4));
+    if (!lv_get_u32(L, 5, &action) || action == 0)
+        return luaL_error(L, "verve: add_step_continuous: action must be an integer from 1 to the number of actions");
+    count = lv_read_continuous_values(L, 6, "add_step_continuous", values);
+    lv_read_obs(L, 3, "add_step_continuous", 0, &o);
+    r = verve_recording_add_step_continuous(lv_open_recording(L, 1), reward, o.discrete, o.n_discrete, o.continuous,
+                                            o.n_continuous, dt, action - 1, values, count);
+    if (r != VERVE_OK) return lv_fail_indexed(L, "add_step_continuous", r);
     return 0;
 }
 
@@ -138,6 +158,7 @@ int lv_replay(lua_State* L) {
 
 static const luaL_Reg lv_recording_methods[] = {
     {"add_step", lv_add_step},
+    {"add_step_continuous", lv_add_step_continuous},
     {"add_end_episode", lv_add_end_episode},
     {"add_truncation", lv_add_truncation},
     {"size", lv_recording_size},

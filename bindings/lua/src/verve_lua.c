@@ -565,6 +565,30 @@ static int lv_update_demonstrated(lua_State* L) {
     return 0;
 }
 
+/* agent:update_demonstrated_continuous(reward, obs, dt, action, values [, mask]): the host took
+ * `action` (1-based) and played the continuous actions `values` ({v1, ...}, each in [-1, 1]). */
+static int lv_update_demonstrated_continuous(lua_State* L) {
+    float reward, dt, values[VERVE_MAX_CONTINUOUS_ACTIONS];
+    uint32_t action = 0, n = 0, count;
+    uint8_t mask[LV_MAX_CHOICES];
+    lv_obs o;
+    verve_result r;
+    luaL_checkudata(L, 1, LV_AGENT_MT);
+    reward = lv_to_float(luaL_checknumber(L, 2));
+    dt = lv_to_float(luaL_checknumber(L, 4));
+    if (!lv_get_u32(L, 5, &action) || action == 0)
+        return luaL_error(L, "verve: update_demonstrated_continuous: action must be an integer from 1 to the number of actions");
+    count = lv_read_continuous_values(L, 6, "update_demonstrated_continuous", values);
+    lv_read_obs(L, 3, "update_demonstrated_continuous", 0, &o);
+    if (!lua_isnoneornil(L, 7)) n = lv_read_mask(L, 7, mask);
+    /* Every Lua input is read before the handle is taken: a metamethod may close the agent. */
+    r = verve_agent_update_demonstrated_continuous(lv_open_agent(L), reward, o.discrete, o.n_discrete, o.continuous,
+                                                   o.n_continuous, dt, lua_isnoneornil(L, 7) ? NULL : mask, n, action - 1,
+                                                   values, count);
+    if (r != VERVE_OK) return lv_fail_indexed(L, "update_demonstrated_continuous", r);
+    return 0;
+}
+
 static int lv_teach(lua_State* L) {
     float praise = lv_to_float(luaL_checknumber(L, 2));
     verve_result r = verve_agent_teach(lv_open_agent(L), praise);
@@ -1116,6 +1140,7 @@ static const luaL_Reg lv_batch_meta[] = {
 static const luaL_Reg lv_agent_methods[] = {
     {"update", lv_update},
     {"update_demonstrated", lv_update_demonstrated},
+    {"update_demonstrated_continuous", lv_update_demonstrated_continuous},
     {"teach", lv_teach},
     {"end_episode", lv_end_episode},
     {"truncate_episode", lv_truncate_episode},

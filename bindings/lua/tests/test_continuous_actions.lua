@@ -239,3 +239,59 @@ T.check("1-D reach: the greedy action points back to 0 after 400 episodes", func
   assert(left > 0.3 and right < -0.3, "the agent did not learn to move back towards 0")
   agent:close()
 end)
+
+-- A teacher's continuous actions (docs/teaching.md): the reach shown for 10 episodes by a driver
+-- that steers back to 0 (a = -10 x within [-1, 1]) points the greedy action back at once; the same
+-- steps recorded and replayed train an agent to the same bytes; bad values are refused.
+T.check("update_demonstrated_continuous teaches the reach; add_step_continuous records it", function()
+  local DT = 0.05
+  local desc = { continuous = 1, continuous_actions = 1, seed = 1 }
+  local shown, replayed = verve.agent(desc), verve.agent(desc)
+  local rec = verve.recording(shown)
+  local state = 12346
+  local function uniform()
+    state = state * 16807 % 2147483647
+    return state / 2147483647
+  end
+  local o, v = { continuous = { 0 } }, { 0 }
+  for _ = 1, 10 do
+    local x, r = uniform() * 2 - 1, 0
+    for _ = 1, 100 do
+      o.continuous[1] = x
+      v[1] = math.max(-1, math.min(1, -10 * x))
+      shown:update_demonstrated_continuous(r, o, DT, 1, v)
+      rec:add_step_continuous(r, o, DT, 1, v)
+      assert(shown:continuous_action()[1] == v[1] or math.abs(shown:continuous_action()[1] - v[1]) < 1e-6)
+      x = math.max(-1, math.min(1, x + 2 * DT * v[1]))
+      r = -math.abs(x)
+    end
+    shown:truncate_episode(r)
+    rec:add_truncation(r)
+  end
+  replayed:replay(verve.load_recording_string(rec:save_string()))
+  assert(replayed:save_string() == shown:save_string(), "a replayed recording trains the same agent")
+  shown:set_learning(false)
+  shown:set_action_selection("greedy")
+  local function greedy_at(x)
+    shown:reset_short_term_memory()
+    o.continuous[1] = x
+    shown:update(0, o, DT)
+    return shown:continuous_action()[1]
+  end
+  local left, right = greedy_at(-0.6), greedy_at(0.6)
+  print(("\n  after 10 demonstrated episodes: greedy %.3f at x = -0.6, %.3f at x = +0.6"):format(left, right))
+  assert(left > 0.5 and right < -0.5, "the demonstrations did not teach the reach")
+
+  local before = replayed:save_string()
+  T.expect_library_error("update_demonstrated_continuous",
+    function() replayed:update_demonstrated_continuous(0, o, DT, 1, { 1.5 }) end)
+  T.expect_library_error("update_demonstrated_continuous",
+    function() replayed:update_demonstrated_continuous(0, o, DT, 1, { 0 / 0 }) end)
+  T.expect_library_error("update_demonstrated_continuous",
+    function() replayed:update_demonstrated_continuous(0, o, DT, 1, { 0.1, 0.2 }) end)
+  T.expect_error("continuous values must be a list", function() replayed:update_demonstrated_continuous(0, o, DT, 1, 0.5) end)
+  T.expect_error("must be a number", function() replayed:update_demonstrated_continuous(0, o, DT, 1, { "x" }) end)
+  T.expect_library_error("add_step_continuous", function() rec:add_step_continuous(0, o, DT, 1, { -2 }) end)
+  assert(replayed:save_string() == before, "a refused call changes nothing")
+  shown:close(); replayed:close(); rec:close()
+end)

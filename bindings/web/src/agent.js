@@ -2,7 +2,7 @@
 // is garbage collected. Every method checks its input first; a refused call changes nothing.
 import { invalidArgument, invalidState } from './errors.js';
 import { L, readDescriptor } from './descriptor.js';
-import { checkMask, checkNumber, checkObservation, writeObservation } from './observation.js';
+import { checkContinuousValues, checkMask, checkNumber, checkObservation, writeObservation } from './observation.js';
 import { save } from './saves.js';
 
 const SELECTIONS = ['sample', 'greedy'];
@@ -85,6 +85,30 @@ export class Agent {
     for (let i = 0; i < flags; ++i) rt.heap.u8[m + i] = mask[i] ? 1 : 0;
     rt.check(rt.m._verve_agent_update_demonstrated(h, reward, d, obs.discrete.length, c, obs.continuous.length, dt,
       flags ? m : 0, flags, action));
+  }
+
+  /**
+   * updateDemonstrated with the continuous actions the host played too (docs/teaching.md): one per
+   * continuous action, each in [-1, 1]; the agent learns from them and continuousAction() reads them back.
+   */
+  updateDemonstratedContinuous(reward, observation, dt, action, continuousAction, mask) {
+    const h = this.live();
+    checkNumber('reward', reward);
+    const obs = checkObservation('observation', observation);
+    checkNumber('dt', dt);
+    if (!Number.isInteger(action) || action < 0 || action >= this.numActions) {
+      throw invalidArgument(`action must be an integer in 0..${this.numActions - 1}, got ${String(action)}`);
+    }
+    const values = checkContinuousValues('continuousAction', continuousAction);
+    if (mask !== undefined) checkMask(mask, this.numChoices, this.actionBranches);
+    const flags = mask === undefined ? 0 : mask.length;
+    const rt = this.rt;
+    const [d, c, m, v] = rt.carve([4 * obs.discrete.length, 4 * obs.continuous.length, Math.max(flags, 1), 4 * values.length]);
+    writeObservation(rt.heap, obs, d, c);
+    for (let i = 0; i < flags; ++i) rt.heap.u8[m + i] = mask[i] ? 1 : 0;
+    rt.heap.f32.set(values, v >> 2);
+    rt.check(rt.m._verve_agent_update_demonstrated_continuous(h, reward, d, obs.discrete.length, c, obs.continuous.length,
+      dt, flags ? m : 0, flags, action, values.length ? v : 0, values.length));
   }
 
   /** Every entry of a Recording into this agent, as demonstrated steps and trial ends (docs/teaching.md). */

@@ -1,7 +1,7 @@
 // Observations, masks and other arrays from JavaScript into wasm memory, checked first: a wrong
 // type or an absurd length is refused before anything is allocated or written.
 import { invalidArgument } from './errors.js';
-import { MAX_CONTINUOUS_SENSORS, MAX_DISCRETE_SENSORS } from './descriptor.js';
+import { MAX_CONTINUOUS_ACTIONS, MAX_CONTINUOUS_SENSORS, MAX_DISCRETE_SENSORS } from './descriptor.js';
 
 function describe(value) {
   if (value === null) return 'null';
@@ -35,6 +35,18 @@ export function checkObservation(what, obs) {
     }
   }
   return { discrete, continuous };
+}
+
+/**
+ * A teacher's continuous actions: an array or typed array of numbers, at most MAX_CONTINUOUS_ACTIONS; NaN and values outside [-1, 1] pass on, for the library to refuse with its message.
+ */
+export function checkContinuousValues(what, values) {
+  if (!Array.isArray(values) && !ArrayBuffer.isView(values)) throw invalidArgument(`${what} must be an array or a typed array (got ${describe(values)})`);
+  if (values.length > MAX_CONTINUOUS_ACTIONS) throw invalidArgument(`${what} has ${values.length} values, at most ${MAX_CONTINUOUS_ACTIONS}`);
+  for (let i = 0; i < values.length; ++i) {
+    if (typeof values[i] !== 'number') throw invalidArgument(`${what}[${i}] must be a number (got ${describe(values[i])})`);
+  }
+  return values;
 }
 
 /** A number argument; NaN and infinities pass on, for the library to refuse with its message. */

@@ -1,7 +1,7 @@
 // A recording: demonstrated steps kept for replay (docs/teaching.md, "Recordings"). Every entry is
 // checked as the agent would check it when it is added; a refused one is not recorded.
 import { invalidArgument, invalidState } from './errors.js';
-import { checkNumber, checkObservation, writeObservation } from './observation.js';
+import { checkContinuousValues, checkNumber, checkObservation, writeObservation } from './observation.js';
 import { save } from './saves.js';
 
 export class Recording {
@@ -39,6 +39,24 @@ export class Recording {
     const [d, c] = rt.carve([4 * obs.discrete.length, 4 * obs.continuous.length]);
     writeObservation(rt.heap, obs, d, c);
     rt.check(rt.m._verve_recording_add_step(h, reward, d, obs.discrete.length, c, obs.continuous.length, dt, action));
+  }
+
+  /** One demonstrated step with the host's continuous actions, as Agent.updateDemonstratedContinuous takes it (no mask). */
+  addStepContinuous(reward, observation, dt, action, continuousAction) {
+    const h = this.live();
+    checkNumber('reward', reward);
+    const obs = checkObservation('observation', observation);
+    checkNumber('dt', dt);
+    if (!Number.isInteger(action) || action < 0 || action > 0xffffffff) {
+      throw invalidArgument(`action must be an integer from 0, got ${String(action)}`);
+    }
+    const values = checkContinuousValues('continuousAction', continuousAction);
+    const rt = this.rt;
+    const [d, c, v] = rt.carve([4 * obs.discrete.length, 4 * obs.continuous.length, 4 * values.length]);
+    writeObservation(rt.heap, obs, d, c);
+    rt.heap.f32.set(values, v >> 2);
+    rt.check(rt.m._verve_recording_add_step_continuous(h, reward, d, obs.discrete.length, c, obs.continuous.length, dt, action,
+      values.length ? v : 0, values.length));
   }
 
   addEndEpisode(finalReward) {

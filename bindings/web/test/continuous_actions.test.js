@@ -164,3 +164,46 @@ test('a 1-D reach: the greedy action drives towards 0 from either side', () => {
   assert.ok(left > 0.9 && right < -0.9, `greedy action at x = -0.6: ${left.toFixed(3)}, at +0.6: ${right.toFixed(3)}`);
   agent.dispose();
 });
+
+// A teacher's continuous actions (docs/teaching.md): the reach shown for 10 episodes by a driver that
+// steers back to 0 (a = -10 x within [-1, 1]) points the greedy action back at once; the steps
+// recorded and replayed train an agent to the same bytes; bad values are refused and change nothing.
+test('updateDemonstratedContinuous teaches the reach; addStepContinuous records it', () => {
+  const shown = verve.createAgent(reachDescriptor(1));
+  const replayed = verve.createAgent(reachDescriptor(1));
+  const rec = verve.createRecording(shown);
+  let state = 12345;
+  const uniform = () => { state = (state * 16807) % 2147483647; return state / 2147483647; };
+  const value = new Float32Array(1);
+  for (let episode = 0; episode < 10; ++episode) {
+    let x = 2 * uniform() - 1;
+    let reward = 0;
+    for (let t = 0; t < 100; ++t) {
+      value[0] = Math.max(-1, Math.min(1, -10 * x));
+      shown.updateDemonstratedContinuous(reward, { continuous: [x] }, 0.05, 0, value);
+      rec.addStepContinuous(reward, { continuous: [x] }, 0.05, 0, value);
+      assert.equal(shown.continuousAction()[0], value[0]);
+      x = Math.max(-1, Math.min(1, x + 0.1 * value[0]));
+      reward = -Math.abs(x);
+    }
+    shown.truncateEpisode(reward);
+    rec.addTruncation(reward);
+  }
+  replayed.replay(verve.loadRecording(rec.saveBytes()));
+  assert.deepEqual(replayed.saveBinaryBytes(), shown.saveBinaryBytes());
+
+  const o = { continuous: [0] };
+  refused(replayed, () => replayed.updateDemonstratedContinuous(0, o, 0.05, 0, [1.5]), undefined, /within \[-1, 1\]/);
+  refused(replayed, () => replayed.updateDemonstratedContinuous(0, o, 0.05, 0, [NaN]), undefined, /within \[-1, 1\]/);
+  refused(replayed, () => replayed.updateDemonstratedContinuous(0, o, 0.05, 0, [0.1, 0.2]), undefined, /has 2 values/);
+  refused(replayed, () => replayed.updateDemonstratedContinuous(0, o, 0.05, 0, 'left'), undefined, /must be an array/);
+  refused(replayed, () => replayed.updateDemonstratedContinuous(0, o, 0.05, 0, ['x']), undefined, /must be a number/);
+  const before = rec.saveBytes();
+  assert.throws(() => rec.addStepContinuous(0, o, 0.05, 0, [-2]), VerveError);
+  assert.throws(() => rec.addStepContinuous(0, o, 0.05, 0, []), VerveError);
+  assert.deepEqual(rec.saveBytes(), before);
+
+  const left = greedyAt(shown, -0.6), right = greedyAt(shown, 0.6);
+  assert.ok(left > 0.5 && right < -0.5, `greedy ${left} at -0.6, ${right} at +0.6`);
+  for (const a of [shown, replayed, rec]) a.dispose();
+});

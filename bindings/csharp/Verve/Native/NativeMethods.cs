@@ -55,6 +55,11 @@ namespace Verve.Native
             byte* actionMask, uint nActions, uint action);
 
         [DllImport(Library, CallingConvention = CallingConvention.Cdecl)]
+        internal static extern ResultCode verve_agent_update_demonstrated_continuous(AgentHandle agent, float reward,
+            int* discrete, uint nDiscrete, float* continuous, uint nContinuous, float dt,
+            byte* actionMask, uint nActions, uint action, float* continuousAction, uint nContinuousActions);
+
+        [DllImport(Library, CallingConvention = CallingConvention.Cdecl)]
         internal static extern ResultCode verve_agent_teach(AgentHandle agent, float praise);
 
         [DllImport(Library, CallingConvention = CallingConvention.Cdecl)]
@@ -66,6 +71,11 @@ namespace Verve.Native
         [DllImport(Library, CallingConvention = CallingConvention.Cdecl)]
         internal static extern ResultCode verve_recording_add_step(RecordingHandle recording, float reward,
             int* discrete, uint nDiscrete, float* continuous, uint nContinuous, float dt, uint action);
+
+        [DllImport(Library, CallingConvention = CallingConvention.Cdecl)]
+        internal static extern ResultCode verve_recording_add_step_continuous(RecordingHandle recording, float reward,
+            int* discrete, uint nDiscrete, float* continuous, uint nContinuous, float dt, uint action,
+            float* continuousAction, uint nContinuousActions);
 
         [DllImport(Library, CallingConvention = CallingConvention.Cdecl)]
         internal static extern ResultCode verve_recording_add_end_episode(RecordingHandle recording, float finalReward);

@@ -24,6 +24,9 @@ car.update(0, { continuous: [0, 0] }, 0.1);
 const controls: Float32Array = car.continuousAction(new Float32Array(car.numContinuousActions));
 const steer: number = car.continuousAction()[0];
 const count: number = car.descriptor().continuousActions;
+car.updateDemonstratedContinuous(0, { continuous: [0.1, 0.2] }, 0.1, 0, [0.5, -1]);  // a player drove
+const carRecording = verve.createRecording(car);
+carRecording.addStepContinuous(0, { continuous: [0.1, 0.2] }, 0.1, 0, new Float32Array([0.5, -1]));
 const bodies = [brain.createBody(), brain.createBody()];
 const actions: Uint32Array = verve.createBatch().update(bodies, [0, 0], [{ continuous: [0, 0] }, null], 0.05);
 agent.setActionSelection('greedy');
@@ -40,6 +43,8 @@ verve.createAgent({ grouping: 'pairs' });
 verve.createAgent({ actionBranches: 3 });
 // @ts-expect-error continuous actions are a count
 verve.createAgent({ continuousActions: [2] });
+// @ts-expect-error the teacher's values are numbers
+car.updateDemonstratedContinuous(0, null, 0.1, 0, ['left']);
 // @ts-expect-error continuousAction fills a Float32Array
 car.continuousAction([0, 0]);
 // @ts-expect-error the selection is 'sample' or 'greedy'
