@@ -281,3 +281,37 @@ TEST(CApiManySensors, AShared32SensorBrainLearnsFromItsBodiesAndSaves) {
     for (verve_agent* b : bodies) verve_agent_destroy(b);
     verve_brain_destroy(brain);
 }
+
+// A recording is shaped like its agent: 40 continuous sensors (Custom groups; Auto stops at 32)
+// are recorded, saved, loaded and replayed.
+TEST(CApiManySensors, ARecordingOf40SensorsSavesLoadsAndReplays) {
+    verve_agent_desc d;
+    verve_agent_desc_default(&d);
+    d.num_continuous_sensors = 40;
+    d.sensor_grouping = VERVE_GROUPING_CUSTOM;
+    d.num_sensor_groups = 3;
+    d.sensor_groups[0] = 0xFFFFull;
+    d.sensor_groups[1] = 0xFFFFull << 16;
+    d.sensor_groups[2] = 0xFFull << 32;
+    d.num_actions = 3;
+    verve_agent* agent = create(d);
+    ASSERT_NE(agent, nullptr);
+    verve_recording* recording = nullptr;
+    ASSERT_EQ(verve_recording_create(agent, &recording), VERVE_OK) << lastError();
+    std::vector<float> c(40);
+    for (int t = 0; t < 20; ++t) {
+        for (int i = 0; i < 40; ++i) c[i] = std::sin(0.2f * static_cast<float>(t + i));
+        ASSERT_EQ(verve_recording_add_step(recording, 0.1f, nullptr, 0, c.data(), 40, 0.1f, static_cast<uint32_t>(t % 3)), VERVE_OK)
+            << lastError();
+    }
+    size_t size = 0;
+    ASSERT_EQ(verve_recording_save_memory(recording, nullptr, &size), VERVE_OK);
+    std::vector<char> bytes(size);
+    ASSERT_EQ(verve_recording_save_memory(recording, bytes.data(), &size), VERVE_OK) << lastError();
+    verve_recording* loaded = nullptr;
+    ASSERT_EQ(verve_recording_load_memory(bytes.data(), size, &loaded), VERVE_OK) << lastError();
+    EXPECT_EQ(verve_agent_replay(agent, loaded), VERVE_OK) << lastError();
+    verve_recording_destroy(loaded);
+    verve_recording_destroy(recording);
+    verve_agent_destroy(agent);
+}
