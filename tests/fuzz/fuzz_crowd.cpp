@@ -119,7 +119,7 @@ verve_fuzz::Observation mostlyGood(FuzzedDataProvider& in, const verve_agent_des
     o.numDiscrete = d.num_discrete_sensors;
     o.numContinuous = d.num_continuous_sensors;
     for (uint32_t i = 0; i < o.numDiscrete; ++i) {
-        o.discrete[i] = static_cast<int32_t>(in.ConsumeIntegralInRange<uint32_t>(0, discreteValues(d, i) - 1));
+        o.discrete[i] = static_cast<int32_t>(in.ConsumeIntegralInRange<uint32_t>(0, verve_fuzz::discreteValues(d, i) - 1));
     }
     for (uint32_t i = 0; i < o.numContinuous; ++i) o.continuous[i] = in.ConsumeFloatingPointInRange<float>(-1.2f, 1.2f);
     return o;
