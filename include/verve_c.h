@@ -100,8 +100,11 @@ typedef enum verve_sensor_kind {
     VERVE_SENSOR_CONTINUOUS = 1
 } verve_sensor_kind;
 
-#define VERVE_MAX_DISCRETE_SENSORS 16
-#define VERVE_MAX_CONTINUOUS_SENSORS 16
+#define VERVE_MAX_DISCRETE_SENSORS 16   /* in the V1-V7 arrays; V8 holds up to VERVE_MAX_SENSORS */
+#define VERVE_MAX_CONTINUOUS_SENSORS 16 /* in the V1-V7 arrays; V8 holds up to VERVE_MAX_SENSORS */
+#define VERVE_MAX_SENSORS 64            /* of each kind, with a V8 struct (a sensor group is 64 bits) */
+#define VERVE_MAX_LATTICE_SENSORS 16    /* continuous sensors one RBF lattice spans: JOINT and each
+                                           CUSTOM group at most this many */
 #define VERVE_MAX_SENSOR_GROUPS 64
 #define VERVE_MAX_ACTION_BRANCHES 8
 #define VERVE_MAX_CONTINUOUS_ACTIONS 8
@@ -170,6 +173,14 @@ typedef struct verve_agent_desc {
        action: num_actions 0 then means 1. Planning needs discrete actions only. 64 bits wide so
        that it starts exactly where V6 ended (V6 had 4 bytes of tail padding). */
     uint64_t num_continuous_actions; /* 0 (default) .. VERVE_MAX_CONTINUOUS_ACTIONS */
+
+    /* V8: up to VERVE_MAX_SENSORS sensors of each kind (num_discrete_sensors and
+       num_continuous_sensors up to 64). Sensor i < 16 is still described in the arrays above; sensor
+       16 + j here. Starts exactly where V7 ended (V7's last field is 64 bits: no tail padding), and
+       240 bytes keep the struct's size a multiple of 8. More than 16 continuous sensors need AUTO
+       (up to 32 sensors) or CUSTOM groups: one lattice spans at most VERVE_MAX_LATTICE_SENSORS. */
+    uint32_t more_discrete_sensor_values[VERVE_MAX_SENSORS - VERVE_MAX_DISCRETE_SENSORS];
+    uint8_t more_continuous_sensor_circular[VERVE_MAX_SENSORS - VERVE_MAX_CONTINUOUS_SENSORS];
 } verve_agent_desc;
 
 /* verve_agent_desc.adaptation bits (docs/algorithm.md, "Learning at defaults"). */
@@ -188,8 +199,8 @@ typedef struct verve_agent_desc {
 
 /* The sizes of verve_agent_desc a library accepts in struct_size: each release's full struct.
  * V1 ended after `seed` (no planning fields); V2 after discrete_prediction; V3 after
- * policy_weight_bound; V4 after adaptation; V5 after sensor_groups; V6 after action_branches; V7 is the
- * current struct. Fields beyond a smaller
+ * policy_weight_bound; V4 after adaptation; V5 after sensor_groups; V6 after action_branches; V7 after
+ * num_continuous_actions (at most 16 sensors of each kind); V8 is the current struct. Fields beyond a smaller
  * struct_size take their defaults. Any other size is refused. */
 #define VERVE_AGENT_DESC_SIZE_V1 ((uint32_t)offsetof(verve_agent_desc, planning))
 #define VERVE_AGENT_DESC_SIZE_V2 ((uint32_t)offsetof(verve_agent_desc, max_rbfs))
@@ -197,7 +208,8 @@ typedef struct verve_agent_desc {
 #define VERVE_AGENT_DESC_SIZE_V4 ((uint32_t)offsetof(verve_agent_desc, sensor_grouping))
 #define VERVE_AGENT_DESC_SIZE_V5 ((uint32_t)offsetof(verve_agent_desc, num_action_branches))
 #define VERVE_AGENT_DESC_SIZE_V6 ((uint32_t)offsetof(verve_agent_desc, num_continuous_actions))
-#define VERVE_AGENT_DESC_SIZE_V7 ((uint32_t)sizeof(verve_agent_desc))
+#define VERVE_AGENT_DESC_SIZE_V7 ((uint32_t)offsetof(verve_agent_desc, more_discrete_sensor_values))
+#define VERVE_AGENT_DESC_SIZE_V8 ((uint32_t)sizeof(verve_agent_desc))
 
 typedef struct verve_agent_stats {
     uint32_t struct_size;           /* VERVE_AGENT_STATS_SIZE_V1 or _V2 (sizeof): only that many bytes are written */

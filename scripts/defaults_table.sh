@@ -57,6 +57,7 @@ signaled-hot-plate-2d-continuous   30  1601  steps   1441  1601  optimal_~9.5
 signaled-hot-plate-1d-2-distractors   20   301  steps    271   301  optimal_~9.5_(4_sensors:_one_lattice)
 signaled-hot-plate-1d-6-distractors   20   301  steps    271   301  optimal_~9.5_(8_sensors:_groups)
 signaled-hot-plate-1d-14-distractors  20   301  steps    271   301  optimal_~9.5_(16_sensors:_groups)
+signaled-hot-plate-1d-30-distractors  20   301  steps    271   301  optimal_~9.5_(32_sensors:_groups)
 signaled-hot-plate-2d-branches        20   301  steps    271   301  optimal_~4.9_(3x3x2_action_branches)
 signaled-hot-plate-2d-18-moves        20   301  steps    271   301  optimal_~4.9_(the_same_18_moves_as_one_set)
 steering-car                       20   301  steps    271   301  scripted_driver_73_(steering,_throttle:_2_continuous_actions)

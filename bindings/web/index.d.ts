@@ -28,9 +28,9 @@ export interface ContinuousSensor {
 
 /** An agent's settings; every field is optional (Verve.defaults() has them all). Unknown fields are errors. */
 export interface AgentDescriptor {
-  /** Values per discrete sensor, e.g. [10, 10] (at most 16 sensors). */
+  /** Values per discrete sensor, e.g. [10, 10] (at most 64 sensors). */
   discrete?: number[];
-  /** A count of plain continuous sensors, or one entry per sensor (at most 16). */
+  /** A count of plain continuous sensors, or one entry per sensor (at most 64; beyond 16 with grouping auto, up to 32, or custom groups of at most 16). */
   continuous?: number | ContinuousSensor[];
   actions?: number;
   /** RBFs across [-1, 1] per continuous sensor (default 10). */

@@ -59,7 +59,11 @@ struct Adaptation {
 // for more memory or work per update than these allow (docs/c-api.md "Limits").
 struct DescriptorLimits {
     static constexpr std::uint32_t kMaxActions = 4096;
-    static constexpr std::uint32_t kMaxSensors = 16;  // of each kind
+    // Sensors an agent may have, of each kind: a sensor group is a 64-bit mask of continuous sensors.
+    static constexpr std::uint32_t kMaxSensors = 64;
+    // Continuous sensors one RBF lattice may span: its lookup scratch is inline arrays of this size
+    // (core/rbf_lattice.hpp). More sensors are read by several lattices (Auto or Custom groups).
+    static constexpr std::uint32_t kMaxLatticeSensors = 16;
     static constexpr std::uint32_t kMaxResolution = 4096;
     static constexpr std::uint64_t kMaxDiscreteValues = 1ull << 31;  // per sensor: readings are int32
     static constexpr std::uint64_t kMaxDiscreteCombinations = 1ull << 53;

@@ -75,6 +75,8 @@ std::vector<TaskInfo> makeRegistry() {
          distractors(6), 100, 301, Metric::Steps},
         {"signaled-hot-plate-1d-14-distractors", "1D signaled hot plate, position + continuous signal + 14 distractors",
          distractors(14), 100, 301, Metric::Steps},
+        {"signaled-hot-plate-1d-30-distractors", "1D signaled hot plate, position + continuous signal + 30 distractors",
+         distractors(30), 100, 301, Metric::Steps},
         {"signaled-hot-plate-2d-branches", "2D signaled hot plate, move x move x pace as 3 action branches (3x3x2)",
          branchedPlate(true), 100, 301, Metric::Steps},
         {"signaled-hot-plate-2d-18-moves", "2D signaled hot plate, the same 18 combined moves as one action set",

@@ -1,5 +1,6 @@
 #include "capi/capi_desc.hpp"
 
+#include <algorithm>
 #include <cstddef>
 #include <cstring>
 #include <string>
@@ -16,8 +17,8 @@ void requireKnownSize(std::uint32_t size) {
         refuse("struct_size " + std::to_string(size) + " is not a verve_agent_desc size this library knows (" +
                std::to_string(VERVE_AGENT_DESC_SIZE_V1) + ", " + std::to_string(VERVE_AGENT_DESC_SIZE_V2) + ", " +
                std::to_string(VERVE_AGENT_DESC_SIZE_V3) + ", " + std::to_string(VERVE_AGENT_DESC_SIZE_V4) + ", " +
-               std::to_string(VERVE_AGENT_DESC_SIZE_V5) + ", " + std::to_string(VERVE_AGENT_DESC_SIZE_V6) + " or " +
-               std::to_string(VERVE_AGENT_DESC_SIZE_V7) +
+               std::to_string(VERVE_AGENT_DESC_SIZE_V5) + ", " + std::to_string(VERVE_AGENT_DESC_SIZE_V6) + ", " +
+               std::to_string(VERVE_AGENT_DESC_SIZE_V7) + " or " + std::to_string(VERVE_AGENT_DESC_SIZE_V8) +
                "); fill the struct with verve_agent_desc_init");
     }
 }
@@ -31,7 +32,12 @@ void requireFlag(std::uint32_t value, const std::string& name) {
 bool isKnownDescSize(std::uint32_t size) noexcept {
     return size == VERVE_AGENT_DESC_SIZE_V1 || size == VERVE_AGENT_DESC_SIZE_V2 || size == VERVE_AGENT_DESC_SIZE_V3 ||
            size == VERVE_AGENT_DESC_SIZE_V4 || size == VERVE_AGENT_DESC_SIZE_V5 || size == VERVE_AGENT_DESC_SIZE_V6 ||
-           size == VERVE_AGENT_DESC_SIZE_V7;
+           size == VERVE_AGENT_DESC_SIZE_V7 || size == VERVE_AGENT_DESC_SIZE_V8;
+}
+
+// Sensors a struct of `size` bytes can describe: 16 of each kind before V8.
+static std::uint32_t sensorsIn(std::uint32_t size) noexcept {
+    return size >= VERVE_AGENT_DESC_SIZE_V8 ? VERVE_MAX_SENSORS : VERVE_MAX_DISCRETE_SENSORS;
 }
 
 // Each new field starts where the struct before it ended (the V6 struct's size: its last field's
@@ -40,6 +46,27 @@ constexpr std::size_t kV6End = offsetof(verve_agent_desc, action_branches) + siz
 static_assert(VERVE_AGENT_DESC_SIZE_V6 == (kV6End + alignof(verve_agent_desc) - 1) / alignof(verve_agent_desc) * alignof(verve_agent_desc),
               "num_continuous_actions starts where the V6 struct ended");
 static_assert(VERVE_MAX_CONTINUOUS_ACTIONS == DescriptorLimits::kMaxContinuousActions, "one limit");
+// V8 likewise: V7 ended on a 64-bit field, so its size is its end and V8's arrays start there.
+constexpr std::size_t kV7End = offsetof(verve_agent_desc, num_continuous_actions) + sizeof(verve_agent_desc::num_continuous_actions);
+static_assert(VERVE_AGENT_DESC_SIZE_V7 == kV7End, "more_discrete_sensor_values starts where the V7 struct ended");
+static_assert(offsetof(verve_agent_desc, more_continuous_sensor_circular) ==
+                  offsetof(verve_agent_desc, more_discrete_sensor_values) + sizeof(verve_agent_desc::more_discrete_sensor_values),
+              "the V8 arrays are packed");
+static_assert(VERVE_AGENT_DESC_SIZE_V8 == kV7End + sizeof(verve_agent_desc::more_discrete_sensor_values) +
+                                              sizeof(verve_agent_desc::more_continuous_sensor_circular),
+              "no tail padding after V8's arrays");
+static_assert(VERVE_MAX_SENSORS == DescriptorLimits::kMaxSensors, "one limit");
+static_assert(VERVE_MAX_LATTICE_SENSORS == DescriptorLimits::kMaxLatticeSensors, "one limit");
+static_assert(VERVE_MAX_DISCRETE_SENSORS == 16 && VERVE_MAX_CONTINUOUS_SENSORS == 16, "V1-V7 hosts' arrays");
+
+// Sensor i's entry: the V1-V7 array below 16, the V8 one above.
+static std::uint32_t& discreteValues(verve_agent_desc& d, std::size_t i) noexcept {
+    return i < VERVE_MAX_DISCRETE_SENSORS ? d.discrete_sensor_values[i] : d.more_discrete_sensor_values[i - VERVE_MAX_DISCRETE_SENSORS];
+}
+static std::uint8_t& circularFlag(verve_agent_desc& d, std::size_t i) noexcept {
+    return i < VERVE_MAX_CONTINUOUS_SENSORS ? d.continuous_sensor_circular[i]
+                                            : d.more_continuous_sensor_circular[i - VERVE_MAX_CONTINUOUS_SENSORS];
+}
 
 // The full current struct for a descriptor: the one place the two layouts meet field by field.
 static verve_agent_desc fullDesc(const AgentDescriptor& in) noexcept {
@@ -47,10 +74,11 @@ static verve_agent_desc fullDesc(const AgentDescriptor& in) noexcept {
     std::memset(&d, 0, sizeof d);  // also the padding, so the bytes are deterministic
     d.struct_size = sizeof d;
     d.num_discrete_sensors = static_cast<std::uint32_t>(in.discreteSensors.size());
-    for (std::size_t i = 0; i < in.discreteSensors.size(); ++i) d.discrete_sensor_values[i] = in.discreteSensors[i];
+    // Validated: at most VERVE_MAX_SENSORS of each kind.
+    for (std::size_t i = 0; i < in.discreteSensors.size() && i < VERVE_MAX_SENSORS; ++i) discreteValues(d, i) = in.discreteSensors[i];
     d.num_continuous_sensors = static_cast<std::uint32_t>(in.continuousSensors.size());
-    for (std::size_t i = 0; i < in.continuousSensors.size(); ++i) {
-        d.continuous_sensor_circular[i] = in.continuousSensors[i].circular ? 1 : 0;
+    for (std::size_t i = 0; i < in.continuousSensors.size() && i < VERVE_MAX_SENSORS; ++i) {
+        circularFlag(d, i) = in.continuousSensors[i].circular ? 1 : 0;
     }
     d.resolution = in.resolution;
     d.num_actions = in.numActions;
@@ -97,13 +125,18 @@ AgentDescriptor toDescriptor(const verve_agent_desc& in) {
     verve_agent_desc d = defaultDesc();
     std::memcpy(&d, &in, in.struct_size);
 
-    if (d.num_discrete_sensors > VERVE_MAX_DISCRETE_SENSORS) {
-        refuse("num_discrete_sensors is " + std::to_string(d.num_discrete_sensors) + ", at most " +
-               std::to_string(VERVE_MAX_DISCRETE_SENSORS));
+    // A struct before V8 has room for 16 sensors of each kind: more would read past its end.
+    const std::uint32_t maxSensors = sensorsIn(in.struct_size);
+    const std::string why = maxSensors < VERVE_MAX_SENSORS ? " (struct_size " + std::to_string(in.struct_size) +
+                                                                 " holds 16; VERVE_AGENT_DESC_SIZE_V8 holds " +
+                                                                 std::to_string(VERVE_MAX_SENSORS) + ")"
+                                                           : "";
+    if (d.num_discrete_sensors > maxSensors) {
+        refuse("num_discrete_sensors is " + std::to_string(d.num_discrete_sensors) + ", at most " + std::to_string(maxSensors) + why);
     }
-    if (d.num_continuous_sensors > VERVE_MAX_CONTINUOUS_SENSORS) {
+    if (d.num_continuous_sensors > maxSensors) {
         refuse("num_continuous_sensors is " + std::to_string(d.num_continuous_sensors) + ", at most " +
-               std::to_string(VERVE_MAX_CONTINUOUS_SENSORS));
+               std::to_string(maxSensors) + why);
     }
     requireFlag(d.rbf_allocation, "rbf_allocation");
     requireFlag(d.planning, "planning");
@@ -113,10 +146,13 @@ AgentDescriptor toDescriptor(const verve_agent_desc& in) {
     if (d.curiosity > VERVE_CURIOSITY_PROGRESS) refuse("curiosity must be 0, 1 or 2, not " + std::to_string(d.curiosity));
 
     AgentDescriptor out;
-    for (std::uint32_t i = 0; i < d.num_discrete_sensors; ++i) out.addDiscreteSensor(d.discrete_sensor_values[i]);
+    for (std::uint32_t i = 0; i < d.num_discrete_sensors; ++i) out.addDiscreteSensor(discreteValues(d, i));
     for (std::uint32_t i = 0; i < d.num_continuous_sensors; ++i) {
-        requireFlag(d.continuous_sensor_circular[i], "continuous_sensor_circular[" + std::to_string(i) + "]");
-        out.addContinuousSensor(d.continuous_sensor_circular[i] != 0);
+        const std::uint8_t flag = circularFlag(d, i);
+        requireFlag(flag, i < VERVE_MAX_CONTINUOUS_SENSORS
+                              ? "continuous_sensor_circular[" + std::to_string(i) + "]"
+                              : "more_continuous_sensor_circular[" + std::to_string(i - VERVE_MAX_CONTINUOUS_SENSORS) + "]");
+        out.addContinuousSensor(flag != 0);
     }
     out.resolution = d.resolution;
     out.numActions = d.num_actions;
@@ -173,6 +209,12 @@ AgentDescriptor toDescriptor(const verve_agent_desc& in) {
 void writeDesc(const AgentDescriptor& in, verve_agent_desc& out) {
     const std::uint32_t size = out.struct_size;
     requireKnownSize(size);
+    // An older struct cannot hold this agent's sensors: a host would read a count past its arrays.
+    const std::size_t sensors = std::max(in.discreteSensors.size(), in.continuousSensors.size());
+    if (sensors > sensorsIn(size)) {
+        refuse("the agent has " + std::to_string(sensors) + " sensors of a kind; struct_size " + std::to_string(size) +
+               " holds 16: pass a VERVE_AGENT_DESC_SIZE_V8 struct");
+    }
     verve_agent_desc d = fullDesc(in);
     d.struct_size = size;
     std::memcpy(&out, &d, size);  // an older, smaller struct gets only its own bytes

@@ -4,6 +4,7 @@
 
 #include "core/fine_lattice.hpp"
 #include "core/predictive_model.hpp"
+#include "core/sensor_groups.hpp"
 #include "verve/agent.hpp"
 
 namespace verve {
@@ -47,6 +48,8 @@ public:
     explicit Validator(FieldNaming naming) : naming_(naming) {}
 
     std::string name(Field f) const { return naming_ == FieldNaming::CAbi ? f.c : f.cpp; }
+    // An enumerator as each API spells it: "Joint" / "JOINT".
+    std::string value(const char* cpp, const char* c) const { return naming_ == FieldNaming::CAbi ? c : cpp; }
     std::string name(Field f, std::size_t i) const { return name(f) + "[" + std::to_string(i) + "]"; }
 
     void require(bool ok, const std::string& message) const {
@@ -110,6 +113,27 @@ void validateGroups(const AgentDescriptor& d, const Validator& v) {
     if (covered != all) {
         v.require(false, "continuous sensor " + std::to_string(__builtin_ctzll(all & ~covered)) + " is in none of " +
                              v.name(kSensorGroups) + ": its readings would be ignored");
+    }
+}
+
+// Every lattice within what one lattice may span, and no more lattices than a group mask holds
+// (Joint over many sensors, Custom groups too wide, Auto's 2n - 1 groups beyond 32 sensors).
+void validateLattices(const AgentDescriptor& d, const Validator& v) {
+    const auto groups = core::sensorGroups(d);
+    v.require(groups.size() <= Limits::kMaxSensorGroups,
+              std::to_string(d.continuousSensors.size()) + " continuous sensors make " + std::to_string(groups.size()) +
+                  " " + v.value("Auto", "AUTO") + " " + v.name(kSensorGroups) + " (one per sensor and per neighbouring pair), at most " +
+                  std::to_string(Limits::kMaxSensorGroups) + "; list " + v.value("Custom", "CUSTOM") + " " + v.name(kSensorGroups));
+    for (std::size_t i = 0; i < groups.size(); ++i) {
+        const int n = __builtin_popcountll(groups[i]);
+        if (n <= static_cast<int>(Limits::kMaxLatticeSensors)) continue;
+        v.require(false, d.grouping == SensorGrouping::Custom
+                             ? v.name(kSensorGroups, i) + " spans " + std::to_string(n) + " continuous sensors, one lattice at most " +
+                                   std::to_string(Limits::kMaxLatticeSensors) + "; split it into smaller groups"
+                             : v.value("Joint", "JOINT") + " " + v.name(kGrouping) + " puts all " + std::to_string(n) +
+                                   " continuous sensors in one lattice, which spans at most " +
+                                   std::to_string(Limits::kMaxLatticeSensors) + "; use " + v.value("Auto", "AUTO") + " or " +
+                                   v.value("Custom", "CUSTOM") + " " + v.name(kGrouping));
     }
 }
 
@@ -202,6 +226,7 @@ void AgentDescriptor::validate(FieldNaming naming) const {
     v.require(continuousActions == 0 || !planning, v.name(kPlanning) + " needs discrete actions only (no " +
                                                       v.name(kContinuousActions) + ")");
     validateGroups(*this, v);
+    validateLattices(*this, v);
     validateDerivedSizes(*this, v);
 }
 

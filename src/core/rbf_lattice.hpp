@@ -27,7 +27,7 @@ namespace verve::core {
 // several threads at once gives each worker its own (core/shared_step.hpp). Either way a lookup
 // finds the same features in the same order: the measure only chooses how cells are read.
 struct LookupScratch {
-    static constexpr std::uint32_t kMaxDims = DescriptorLimits::kMaxSensors;
+    static constexpr std::uint32_t kMaxDims = DescriptorLimits::kMaxLatticeSensors;
     std::uint32_t blocksTested = 0, blocksKept = 0;
     std::uint32_t wholeLookupsLeft = 0;
     std::array<std::int32_t, kMaxDims> coords{}, neighbour{}, offsets{};

@@ -26,6 +26,10 @@ AgentDescriptor shapeOf(std::vector<std::uint32_t> discrete, std::uint32_t conti
     AgentDescriptor d;
     d.discreteSensors = std::move(discrete);
     d.continuousSensors.resize(continuous);
+    // A lattice per sensor: the shape never builds a representation, and Auto's groups would refuse
+    // more than 32 continuous sensors that an agent with Custom groups may have.
+    d.grouping = SensorGrouping::Custom;
+    for (std::uint32_t i = 0; i < continuous; ++i) d.sensorGroups.push_back(std::uint64_t(1) << i);
     d.numActions = actions;
     d.continuousActions = continuousActions;
     d.validate();

@@ -19,7 +19,7 @@ std::vector<std::uint8_t> circularOf(const AgentDescriptor& desc, const std::vec
 
 StateRepresentation::StateRepresentation(const AgentDescriptor& desc)
     : numContinuous_(static_cast<std::uint32_t>(desc.continuousSensors.size())) {
-    if (numContinuous_ > LookupScratch::kMaxDims) throw Error(ErrorCode::InvalidArgument, "too many continuous sensors");
+    if (numContinuous_ > DescriptorLimits::kMaxSensors) throw Error(ErrorCode::InvalidArgument, "too many continuous sensors");
     for (std::uint32_t d = 0; d < numContinuous_; ++d) circular_[d] = desc.continuousSensors[d].circular ? 1 : 0;
     for (auto c : desc.discreteSensors) keyCount_ *= c;
     const auto specs = lattices(desc);

@@ -87,7 +87,7 @@ private:
     const float* point(const Group& g, const float* continuous, float* buffer) const;
 
     std::vector<Group> groups_;
-    std::array<std::uint8_t, LookupScratch::kMaxDims> circular_{};
+    std::array<std::uint8_t, DescriptorLimits::kMaxSensors> circular_{};  // every sensor; a lattice spans fewer
     std::uint32_t numContinuous_ = 0;
     std::uint64_t keyCount_ = 1;  // discrete combinations
     std::uint32_t featureCount_ = 0;

@@ -714,7 +714,7 @@ TEST(CApiDesc, BadFieldsAreRefusedWithTheirName) {
         const char* name;
     };
     const Case cases[] = {
-        {[](verve_agent_desc& d) { d.num_discrete_sensors = 17; }, "num_discrete_sensors"},
+        {[](verve_agent_desc& d) { d.num_discrete_sensors = 65; }, "num_discrete_sensors"},
         {[](verve_agent_desc& d) { d.num_continuous_sensors = 99; }, "num_continuous_sensors"},
         {[](verve_agent_desc& d) { d.continuous_sensor_circular[0] = 2; }, "circular"},
         {[](verve_agent_desc& d) { d.rbf_allocation = 5; }, "rbf_allocation"},

@@ -18,7 +18,7 @@ int verve_header_check_c(void) {
     verve_result r = VERVE_OK;
     verve_agent* agent = NULL;
     stats.struct_size = (uint32_t)sizeof stats;
-    desc.struct_size = VERVE_AGENT_DESC_SIZE_V7;
+    desc.struct_size = VERVE_AGENT_DESC_SIZE_V8;
     (void)agent;
     return (int)r + (int)axis.samples + (int)desc.struct_size + (int)stats.struct_size + VERVE_VERSION_NUMBER;
 }

@@ -115,3 +115,48 @@ TEST(SensorGroups, CustomGroupsAreChecked) {
     full.grouping = SensorGrouping::Joint;
     EXPECT_NE(validationError(full).find("per group"), std::string::npos);
 }
+
+// An agent may have 64 sensors of each kind (a group is a 64-bit mask); one lattice spans at most
+// 16 (its lookup's inline arrays), and Auto's 2n - 1 lattices fit 64 groups up to 32 sensors.
+TEST(SensorGroups, UpTo64SensorsWithNoLatticeOverMoreThan16) {
+    EXPECT_EQ(validationError(sensors(32)), "");
+    EXPECT_EQ(core::sensorGroups(sensors(32)).size(), 63u);
+    EXPECT_NE(validationError(sensors(33)).find("33 continuous sensors make 65 AUTO sensor_groups"), std::string::npos)
+        << validationError(sensors(33));
+    AgentDescriptor joint = sensors(17);
+    joint.grouping = SensorGrouping::Joint;
+    EXPECT_NE(validationError(joint).find("JOINT sensor_grouping puts all 17 continuous sensors in one lattice, which spans "
+                                          "at most 16; use AUTO or CUSTOM sensor_grouping"),
+              std::string::npos)
+        << validationError(joint);
+    joint.continuousSensors.resize(16);
+    EXPECT_EQ(validationError(joint), "");
+    AgentDescriptor custom = sensors(64);
+    custom.grouping = SensorGrouping::Custom;
+    custom.sensorGroups = {0xFFFF, 0xFFFFull << 16, 0xFFFFull << 32, 0xFFFFull << 48};
+    EXPECT_EQ(validationError(custom), "");
+    StateRepresentation rep(custom);
+    EXPECT_EQ(rep.groupCount(), 4u);
+    std::vector<float> x(64, 0.3f);
+    std::vector<ActiveFeature> phi;
+    EXPECT_EQ(rep.activate(nullptr, x.data(), true, phi), 4u);
+    custom.sensorGroups[1] |= 1ull << 32;  // 17 sensors
+    EXPECT_NE(validationError(custom).find("sensor_groups[1] spans 17 continuous sensors, one lattice at most 16; split it"),
+              std::string::npos)
+        << validationError(custom);
+    custom = sensors(65);
+    EXPECT_NE(validationError(custom).find("num_continuous_sensors is 65, at most 64"), std::string::npos);
+    AgentDescriptor discrete;
+    for (int i = 0; i < 64; ++i) discrete.addDiscreteSensor(i < 40 ? 2 : 1);
+    EXPECT_EQ(validationError(discrete), "");
+    discrete.addDiscreteSensor(1);
+    EXPECT_NE(validationError(discrete).find("num_discrete_sensors is 65, at most 64"), std::string::npos);
+    // C++ names in C++ messages.
+    joint.continuousSensors.resize(20);
+    try {
+        joint.validate();
+        ADD_FAILURE() << "Joint over 20 sensors accepted";
+    } catch (const Error& e) {
+        EXPECT_NE(std::string(e.what()).find("Joint grouping puts all 20"), std::string::npos) << e.what();
+    }
+}

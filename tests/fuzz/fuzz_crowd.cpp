@@ -119,7 +119,7 @@ verve_fuzz::Observation mostlyGood(FuzzedDataProvider& in, const verve_agent_des
     o.numDiscrete = d.num_discrete_sensors;
     o.numContinuous = d.num_continuous_sensors;
     for (uint32_t i = 0; i < o.numDiscrete; ++i) {
-        o.discrete[i] = static_cast<int32_t>(in.ConsumeIntegralInRange<uint32_t>(0, d.discrete_sensor_values[i] - 1));
+        o.discrete[i] = static_cast<int32_t>(in.ConsumeIntegralInRange<uint32_t>(0, verve_fuzz::discreteValues(d, i) - 1));
     }
     for (uint32_t i = 0; i < o.numContinuous; ++i) o.continuous[i] = in.ConsumeFloatingPointInRange<float>(-1.2f, 1.2f);
     return o;
@@ -155,9 +155,9 @@ Step readStep(FuzzedDataProvider& in, const World& world) {
             s.discreteOffsets.push_back(static_cast<uint32_t>(s.discrete.size()));
             s.continuousOffsets.push_back(static_cast<uint32_t>(s.continuous.size()));
         }
-        s.discrete.insert(s.discrete.end(), o.discrete, o.discrete + std::min<uint32_t>(o.numDiscrete, VERVE_MAX_DISCRETE_SENSORS + 4));
+        s.discrete.insert(s.discrete.end(), o.discrete, o.discrete + std::min<uint32_t>(o.numDiscrete, VERVE_MAX_SENSORS + 4));
         s.continuous.insert(s.continuous.end(), o.continuous,
-                            o.continuous + std::min<uint32_t>(o.numContinuous, VERVE_MAX_CONTINUOUS_SENSORS + 4));
+                            o.continuous + std::min<uint32_t>(o.numContinuous, VERVE_MAX_SENSORS + 4));
     }
     s.discreteTotal = static_cast<uint32_t>(s.discrete.size());
     s.continuousTotal = static_cast<uint32_t>(s.continuous.size());

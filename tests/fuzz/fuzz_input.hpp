@@ -112,7 +112,31 @@ inline verve_agent_desc anyDescriptor(FuzzedDataProvider& in) {
                                                                                : in.ConsumeIntegralInRange<uint64_t>(1, 3);
         if (d.num_action_branches == 0 && in.ConsumeBool()) d.num_actions = 0;
     }
+    // More than 16 sensors (the V8 struct's arrays), now and then: 17-40 continuous (Auto's groups
+    // up to 32, refused beyond; Joint and wide Custom groups refused over 16) and 17-20 discrete of
+    // mostly 1-2 values. No planning: its model's rows grow with the sensors past the budget above.
+    if (in.ConsumeIntegralInRange<int>(0, 15) == 0) {
+        d.planning = 0;
+        d.num_continuous_sensors = in.ConsumeIntegralInRange<uint32_t>(17, 40);
+        const uint64_t circular = in.ConsumeIntegral<uint64_t>();
+        for (uint32_t i = 0; i < VERVE_MAX_SENSORS - VERVE_MAX_CONTINUOUS_SENSORS; ++i) {
+            d.more_continuous_sensor_circular[i] = static_cast<uint8_t>((circular >> i) & 1u);
+        }
+        if (in.ConsumeIntegralInRange<int>(0, 15) == 0) d.more_continuous_sensor_circular[in.ConsumeIntegralInRange<int>(0, 47)] = 2;
+        if (in.ConsumeBool()) {
+            d.num_discrete_sensors = in.ConsumeIntegralInRange<uint32_t>(17, 20);
+            for (uint32_t i = 0; i < VERVE_MAX_DISCRETE_SENSORS; ++i) d.discrete_sensor_values[i] = in.ConsumeIntegralInRange<uint32_t>(1, 2);
+            for (uint32_t& v : d.more_discrete_sensor_values) v = in.ConsumeIntegralInRange<int>(0, 31) == 0 ? anyCount(in, 3) : 1;
+        }
+    }
     return d;
+}
+
+// Sensor i's value count in any struct (V8 holds sensors 16 and up in a second array).
+inline uint32_t discreteValues(const verve_agent_desc& d, uint32_t i) {
+    return i < VERVE_MAX_DISCRETE_SENSORS ? d.discrete_sensor_values[i]
+           : i < VERVE_MAX_SENSORS        ? d.more_discrete_sensor_values[i - VERVE_MAX_DISCRETE_SENSORS]
+                                          : 1;
 }
 
 // Flags in an accepted agent's action mask: one per choice of each branch, or num_actions (as the
@@ -131,8 +155,8 @@ inline bool maskAllows(const verve_agent_desc& d, const uint8_t* mask, uint32_t 
 
 // Observation arrays sized for any agent: counts are chosen separately (and may be wrong).
 struct Observation {
-    int32_t discrete[VERVE_MAX_DISCRETE_SENSORS + 4] = {};
-    float continuous[VERVE_MAX_CONTINUOUS_SENSORS + 4] = {};
+    int32_t discrete[VERVE_MAX_SENSORS + 4] = {};
+    float continuous[VERVE_MAX_SENSORS + 4] = {};
     uint32_t numDiscrete = 0;
     uint32_t numContinuous = 0;
 };
@@ -141,11 +165,11 @@ struct Observation {
 inline Observation anyObservation(FuzzedDataProvider& in, const verve_agent_desc& d) {
     Observation o;
     const bool wrongCounts = in.ConsumeIntegralInRange<int>(0, 15) == 0;
-    o.numDiscrete = wrongCounts ? in.ConsumeIntegralInRange<uint32_t>(0, VERVE_MAX_DISCRETE_SENSORS + 4) : d.num_discrete_sensors;
-    o.numContinuous = wrongCounts ? in.ConsumeIntegralInRange<uint32_t>(0, VERVE_MAX_CONTINUOUS_SENSORS + 4) : d.num_continuous_sensors;
+    o.numDiscrete = wrongCounts ? in.ConsumeIntegralInRange<uint32_t>(0, VERVE_MAX_SENSORS + 4) : d.num_discrete_sensors;
+    o.numContinuous = wrongCounts ? in.ConsumeIntegralInRange<uint32_t>(0, VERVE_MAX_SENSORS + 4) : d.num_continuous_sensors;
     // Values only for the counts passed (the input's bytes are few; the rest of the arrays stay 0).
     for (uint32_t i = 0; i < o.numDiscrete; ++i) {
-        const uint32_t values = i < VERVE_MAX_DISCRETE_SENSORS ? d.discrete_sensor_values[i] : 1;
+        const uint32_t values = discreteValues(d, i);
         o.discrete[i] = in.ConsumeIntegralInRange<int>(0, 31) == 0
                             ? in.ConsumeIntegral<int32_t>()
                             : static_cast<int32_t>(in.ConsumeIntegralInRange<uint32_t>(0, values > 0 ? values - 1 : 0));

@@ -1,4 +1,4 @@
-// Allocation failure: a fixed scenario (create, 120 updates, a quarter of them demonstrated, a teacher's judgements, with RBF growth, planning and an
+// Allocation failure: a fixed scenario (create, 120 updates (6 for the 32-sensor agent), a quarter of them demonstrated, a teacher's judgements, with RBF growth, planning and an
 // episode end, an XML save and load, then a binary save and load) runs once for every N, with the N-th allocation failing. The
 // call that meets the failure must return VERVE_ERROR_OUT_OF_MEMORY and leave the agent exactly
 // as it was (its save byte-identical), and the scenario, retried from there, must end in the same
@@ -23,20 +23,33 @@ std::string bytesOf(const verve_agent* agent, CountingAllocator& allocator) {
 
 class Scenario {
 public:
-    Scenario(CountingAllocator& allocator, const verve_agent_desc& desc) : allocator_(allocator), desc_(desc) {}
+    // `updates`: 120, or fewer for an agent whose every step allocates much (32 sensors: 63 lattices).
+    Scenario(CountingAllocator& allocator, const verve_agent_desc& desc, int updates)
+        : allocator_(allocator), desc_(desc), updates_(updates) {}
     ~Scenario() { verve_agent_destroy(agent_); }
 
-    int calls() const { return 127; }
+    int calls() const { return updates_ + 7; }
 
     // Call i of the scenario on the current agent.
     verve_result call(int i) {
         if (i == 0) return verve_agent_create(&desc_, &agent_);
-        if (i <= 120) {
-            if (i == 60) return verve_agent_end_episode(agent_, 1.0f);
+        if (i <= updates_) {
+            if (i == updates_ / 2) return verve_agent_end_episode(agent_, 1.0f);
             if (i == 2) return verve_agent_teach(agent_, 0.0f);  // the teacher's memory, from here on
             if (i % 10 == 5) return verve_agent_teach(agent_, i % 20 == 5 ? 1.0f : -0.5f);
-            const int32_t disc = i % 3;
-            const float c[2] = {std::sin(0.9f * static_cast<float>(i)), std::cos(0.4f * static_cast<float>(i))};
+            // Sensor 0 of each kind as the 1-discrete, 2-continuous scenarios always read; more sensors
+            // (the 32-sensor agent) wander too.
+            const uint32_t nd = desc_.num_discrete_sensors, nc = desc_.num_continuous_sensors;
+            std::vector<int32_t> disc(nd);
+            std::vector<float> c(nc);
+            for (uint32_t k = 0; k < nd; ++k) {
+                const uint32_t values = k < 16 ? desc_.discrete_sensor_values[k] : desc_.more_discrete_sensor_values[k - 16];
+                disc[k] = static_cast<int32_t>((static_cast<uint32_t>(i) + k) % values);
+            }
+            for (uint32_t k = 0; k < nc; ++k) {
+                const float t = static_cast<float>(i);
+                c[k] = k == 0 ? std::sin(0.9f * t) : k == 1 ? std::cos(0.4f * t) : std::sin(0.3f * t * static_cast<float>(k) + static_cast<float>(k));
+            }
             uint32_t action = 0;
             if (i % 8 == 1 && desc_.num_continuous_actions > 0) {  // with the teacher's continuous actions
                 const float steer[2] = {c[0], i % 16 == 1 ? 1.0f : -0.5f};
@@ -44,18 +57,19 @@ public:
                                                                   static_cast<uint32_t>(i % 2), steer, 2);
             }
             if (i % 4 == 1) {  // a demonstrated step (docs/teaching.md)
-                return verve_agent_update_demonstrated(agent_, i % 9 == 0 ? 1.0f : -0.1f, &disc, 1, c, 2, 0.1f, nullptr, 0,
-                                                       static_cast<uint32_t>(i % 2));
+                return verve_agent_update_demonstrated(agent_, i % 9 == 0 ? 1.0f : -0.1f, disc.data(), nd, c.data(), nc, 0.1f,
+                                                       nullptr, 0, static_cast<uint32_t>(i % 2));
             }
-            return verve_agent_update(agent_, i % 9 == 0 ? 1.0f : -0.1f, &disc, 1, c, 2, 0.1f, &action);
+            return verve_agent_update(agent_, i % 9 == 0 ? 1.0f : -0.1f, disc.data(), nd, c.data(), nc, 0.1f, &action);
         }
-        if (i == 121 || i == 124) {  // the size query, then the save itself (XML, then binary)
+        const int after = i - updates_;
+        if (after == 1 || after == 4) {  // the size query, then the save itself (XML, then binary)
             size_ = 0;
-            return (i == 121 ? verve_agent_save_memory : verve_agent_save_memory_binary)(agent_, nullptr, &size_);
+            return (after == 1 ? verve_agent_save_memory : verve_agent_save_memory_binary)(agent_, nullptr, &size_);
         }
-        if (i == 122 || i == 125) {
+        if (after == 2 || after == 5) {
             saved_.assign(size_, '\0');
-            return (i == 122 ? verve_agent_save_memory : verve_agent_save_memory_binary)(agent_, &saved_[0], &size_);
+            return (after == 2 ? verve_agent_save_memory : verve_agent_save_memory_binary)(agent_, &saved_[0], &size_);
         }
         verve_agent* loaded = nullptr;
         const verve_result r = verve_agent_load_memory(saved_.data(), size_, &loaded);
@@ -73,12 +87,13 @@ public:
 private:
     CountingAllocator& allocator_;
     verve_agent_desc desc_;
+    int updates_;
     verve_agent* agent_ = nullptr;
     size_t size_ = 0;
     std::string saved_;
 };
 
-void sweep(const verve_agent_desc& desc) {
+void sweep(const verve_agent_desc& desc, int updates = 120) {
     CountingAllocator allocator;
     const verve_hooks hooks = allocator.hooks();
     ASSERT_EQ(verve_set_hooks(&hooks), VERVE_OK) << lastError();
@@ -88,7 +103,7 @@ void sweep(const verve_agent_desc& desc) {
     std::string reference;
     std::vector<long> upTo;
     {
-        Scenario s(allocator, desc);
+        Scenario s(allocator, desc, updates);
         for (int i = 0; i < s.calls(); ++i) {
             ASSERT_EQ(s.call(i), VERVE_OK) << "call " << i << ": " << lastError();
             upTo.push_back(allocator.allocations.load());
@@ -103,7 +118,7 @@ void sweep(const verve_agent_desc& desc) {
     for (long n = 1; n <= total; ++n) {
         allocator.allocations = 0;
         allocator.failAt = n;
-        Scenario s(allocator, desc);
+        Scenario s(allocator, desc, updates);
         bool failed = false;
         for (int i = 0; i < s.calls(); ++i) {
             // Deterministic: allocation n falls in the same call as in the reference run.
@@ -161,6 +176,18 @@ TEST(AllocationFailure, EveryFailedAllocationLeavesAnAgentWithContinuousActionsA
     verve_agent_desc d = mixedDesc(false, 13);
     d.num_continuous_actions = 2;
     sweep(d);
+}
+
+// 32 continuous sensors (Auto: 63 lattices, each adding its RBF all or none) and 17 discrete ones,
+// described in the V8 struct's arrays beyond sensor 16.
+TEST(AllocationFailure, EveryFailedAllocationLeavesA32SensorAgentAsItWas) {
+    verve_agent_desc d = mixedDesc(false, 17);
+    d.num_continuous_sensors = 32;
+    d.more_continuous_sensor_circular[4] = 1;
+    d.num_discrete_sensors = 17;
+    for (uint32_t k = 1; k < 16; ++k) d.discrete_sensor_values[k] = 1;
+    d.more_discrete_sensor_values[0] = 2;
+    sweep(d, 6);  // every step allocates in 63 lattices: 120 would take many minutes
 }
 
 }  // namespace

@@ -43,7 +43,7 @@ TEST(RbfBudget, DefaultIsAMillion) {
     verve_agent_desc d;
     verve_agent_desc_default(&d);
     EXPECT_EQ(d.max_rbfs, 1000000u);
-    EXPECT_EQ(d.struct_size, VERVE_AGENT_DESC_SIZE_V7);
+    EXPECT_EQ(d.struct_size, VERVE_AGENT_DESC_SIZE_V8);
 }
 
 TEST(RbfBudget, NoiseStopsAtTheBudgetAndTheAgentKeepsWorking) {

@@ -66,8 +66,11 @@ namespace Verve.Tests
         {
             var c = Probe.Value;
             Assert.Equal(VerveLibrary.BindingVersionNumber, c["const VERVE_VERSION_NUMBER"]);
-            Assert.Equal(AgentOptions.MaxDiscreteSensors, c["const VERVE_MAX_DISCRETE_SENSORS"]);
-            Assert.Equal(AgentOptions.MaxContinuousSensors, c["const VERVE_MAX_CONTINUOUS_SENSORS"]);
+            Assert.Equal(verve_agent_desc.MaxDiscreteSensors, c["const VERVE_MAX_DISCRETE_SENSORS"]);
+            Assert.Equal(verve_agent_desc.MaxContinuousSensors, c["const VERVE_MAX_CONTINUOUS_SENSORS"]);
+            Assert.Equal(AgentOptions.MaxDiscreteSensors, c["const VERVE_MAX_SENSORS"]);
+            Assert.Equal(AgentOptions.MaxContinuousSensors, c["const VERVE_MAX_SENSORS"]);
+            Assert.Equal(AgentOptions.MaxLatticeSensors, c["const VERVE_MAX_LATTICE_SENSORS"]);
             Assert.Equal((long)RbfAllocation.Full, c["const VERVE_RBF_FULL"]);
             Assert.Equal((long)Curiosity.Progress, c["const VERVE_CURIOSITY_PROGRESS"]);
             Assert.Equal((long)SensorKind.Continuous, c["const VERVE_SENSOR_CONTINUOUS"]);
@@ -86,8 +89,9 @@ namespace Verve.Tests
         [Fact]
         public unsafe void BindingUsesTheCurrentDescriptorVersion()
         {
-            Assert.Equal(Probe.Value["const VERVE_AGENT_DESC_SIZE_V7"], sizeof(verve_agent_desc));
-            // V6 ended where the V7 field begins, V5 where the V6 fields begin, V4 where the V5 fields begin.
+            Assert.Equal(Probe.Value["const VERVE_AGENT_DESC_SIZE_V8"], sizeof(verve_agent_desc));
+            // V7 ended where the V8 arrays begin, V6 where the V7 field begins, V5 where the V6 fields begin, V4 where the V5 fields begin.
+            Assert.Equal(Probe.Value["const VERVE_AGENT_DESC_SIZE_V7"], (long)Marshal.OffsetOf<verve_agent_desc>("more_discrete_sensor_values"));
             Assert.Equal(Probe.Value["const VERVE_AGENT_DESC_SIZE_V6"], (long)Marshal.OffsetOf<verve_agent_desc>("num_continuous_actions"));
             Assert.Equal(Probe.Value["const VERVE_AGENT_DESC_SIZE_V5"], (long)Marshal.OffsetOf<verve_agent_desc>("num_action_branches"));
             Assert.Equal(Probe.Value["const VERVE_AGENT_DESC_SIZE_V4"], (long)Marshal.OffsetOf<verve_agent_desc>("sensor_grouping"));
@@ -97,7 +101,7 @@ namespace Verve.Tests
         public unsafe void DescriptorDefaultsAgreeBetweenDefaultAndInit()
         {
             // verve_agent_desc_default writes the library's whole struct; give it room to spare.
-            byte* scratch = stackalloc byte[1024];
+            byte* scratch = stackalloc byte[2048];
             NativeMethods.verve_agent_desc_default(scratch);
             Assert.Equal(Probe.Value["size verve_agent_desc"], *(uint*)scratch);
 

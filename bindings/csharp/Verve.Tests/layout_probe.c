@@ -41,6 +41,8 @@ int main(void) {
     FIELD(verve_agent_desc, num_action_branches);
     FIELD(verve_agent_desc, action_branches);
     FIELD(verve_agent_desc, num_continuous_actions);
+    FIELD(verve_agent_desc, more_discrete_sensor_values);
+    FIELD(verve_agent_desc, more_continuous_sensor_circular);
 
     SIZE(verve_agent_stats);
     FIELD(verve_agent_stats, struct_size);
@@ -83,6 +85,9 @@ int main(void) {
     printf("const VERVE_AGENT_DESC_SIZE_V5 %u\n", (unsigned)VERVE_AGENT_DESC_SIZE_V5);
     printf("const VERVE_AGENT_DESC_SIZE_V6 %u\n", (unsigned)VERVE_AGENT_DESC_SIZE_V6);
     printf("const VERVE_AGENT_DESC_SIZE_V7 %u\n", (unsigned)VERVE_AGENT_DESC_SIZE_V7);
+    printf("const VERVE_AGENT_DESC_SIZE_V8 %u\n", (unsigned)VERVE_AGENT_DESC_SIZE_V8);
+    printf("const VERVE_MAX_SENSORS %d\n", VERVE_MAX_SENSORS);
+    printf("const VERVE_MAX_LATTICE_SENSORS %d\n", VERVE_MAX_LATTICE_SENSORS);
     printf("const VERVE_MAX_ACTION_BRANCHES %d\n", VERVE_MAX_ACTION_BRANCHES);
     printf("const VERVE_MAX_CONTINUOUS_ACTIONS %d\n", VERVE_MAX_CONTINUOUS_ACTIONS);
     printf("const VERVE_MAX_SENSOR_GROUPS %d\n", VERVE_MAX_SENSOR_GROUPS);

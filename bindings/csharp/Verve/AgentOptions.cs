@@ -14,10 +14,14 @@ namespace Verve
     /// </code></example>
     public sealed class AgentOptions
     {
-        /// <summary>Most discrete sensors an agent can have.</summary>
-        public const int MaxDiscreteSensors = verve_agent_desc.MaxDiscreteSensors;
-        /// <summary>Most continuous sensors an agent can have.</summary>
-        public const int MaxContinuousSensors = verve_agent_desc.MaxContinuousSensors;
+        /// <summary>Most discrete sensors an agent can have (64; 16 before issue 30).</summary>
+        public const int MaxDiscreteSensors = verve_agent_desc.MaxSensors;
+        /// <summary>Most continuous sensors an agent can have (64). Beyond 16 they need
+        /// <see cref="SensorGrouping.Auto"/> (up to 32) or <see cref="SensorGrouping.Custom"/> groups.</summary>
+        public const int MaxContinuousSensors = verve_agent_desc.MaxSensors;
+        /// <summary>Most continuous sensors one RBF lattice spans: a <see cref="SensorGrouping.Joint"/>
+        /// grouping or one <see cref="SensorGrouping.Custom"/> group over more is refused.</summary>
+        public const int MaxLatticeSensors = verve_agent_desc.MaxLatticeSensors;
         /// <summary>Most sensor groups (lattices) a <see cref="SensorGrouping.Custom"/> grouping can list.</summary>
         public const int MaxSensorGroups = verve_agent_desc.MaxSensorGroups;
         /// <summary>Most action branches an agent can have.</summary>
@@ -41,10 +45,11 @@ namespace Verve
         {
             fixed (verve_agent_desc* p = &d)
             {
+                const int old = verve_agent_desc.MaxDiscreteSensors; // sensors beyond it: the V8 arrays
                 for (int i = 0; i < Math.Min(d.num_discrete_sensors, MaxDiscreteSensors); i++)
-                    _discreteSensors.Add((int)p->discrete_sensor_values[i]);
+                    _discreteSensors.Add((int)(i < old ? p->discrete_sensor_values[i] : p->more_discrete_sensor_values[i - old]));
                 for (int i = 0; i < Math.Min(d.num_continuous_sensors, MaxContinuousSensors); i++)
-                    _continuousCircular.Add(p->continuous_sensor_circular[i] != 0);
+                    _continuousCircular.Add((i < old ? p->continuous_sensor_circular[i] : p->more_continuous_sensor_circular[i - old]) != 0);
                 for (int i = 0; i < Math.Min(d.num_sensor_groups, MaxSensorGroups); i++)
                     _sensorGroups.Add(SensorsOf(p->sensor_groups[i]));
                 for (int i = 0; i < Math.Min(d.num_action_branches, MaxActionBranches); i++)
@@ -288,9 +293,19 @@ namespace Verve
         {
             var d = new verve_agent_desc { struct_size = (uint)sizeof(verve_agent_desc) };
             d.num_discrete_sensors = (uint)_discreteSensors.Count;
-            for (int i = 0; i < _discreteSensors.Count; i++) d.discrete_sensor_values[i] = (uint)_discreteSensors[i];
+            const int old = verve_agent_desc.MaxDiscreteSensors; // sensors beyond it: the V8 arrays
+            for (int i = 0; i < _discreteSensors.Count; i++)
+            {
+                if (i < old) d.discrete_sensor_values[i] = (uint)_discreteSensors[i];
+                else d.more_discrete_sensor_values[i - old] = (uint)_discreteSensors[i];
+            }
             d.num_continuous_sensors = (uint)_continuousCircular.Count;
-            for (int i = 0; i < _continuousCircular.Count; i++) d.continuous_sensor_circular[i] = _continuousCircular[i] ? (byte)1 : (byte)0;
+            for (int i = 0; i < _continuousCircular.Count; i++)
+            {
+                byte circular = _continuousCircular[i] ? (byte)1 : (byte)0;
+                if (i < old) d.continuous_sensor_circular[i] = circular;
+                else d.more_continuous_sensor_circular[i - old] = circular;
+            }
             d.resolution = (uint)_resolution;
             d.num_actions = (uint)_actions;
             d.rbf_allocation = (uint)RbfAllocation;

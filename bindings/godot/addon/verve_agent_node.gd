@@ -11,7 +11,7 @@ const VerveAgent = preload("res://addons/verve/verve_agent.gdns")
 const Overlay = preload("res://addons/verve/verve_debug_overlay.gd")
 
 export(int, 1, 64) var actions = 2
-export(int, 0, 16) var continuous_sensors = 0          # each reads a value in [-1, 1]
+export(int, 0, 64) var continuous_sensors = 0          # each reads a value in [-1, 1]
 export(PoolIntArray) var circular_sensors = PoolIntArray()  # which continuous sensors wrap (angles)
 export(PoolIntArray) var discrete_sensors = PoolIntArray()  # each one's value count
 # Below, a negative seed and times of 0 take libverve's defaults (get_options() shows them).

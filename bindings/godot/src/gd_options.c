@@ -58,13 +58,23 @@ static int vg_option_error(vg_call* c, const vg_option* o, const char* expected,
     return vg_fail(c, "option '%s' must be %s (got %s)", o->name, expected, vg_type_name(v));
 }
 
+/* Sensor i's entry in the desc: the first 16 in the V1-V7 arrays, sensors 16..63 in V8's. */
+static uint32_t* vg_discrete_values(verve_agent_desc* d, uint32_t i) {
+    return i < VERVE_MAX_DISCRETE_SENSORS ? &d->discrete_sensor_values[i]
+                                          : &d->more_discrete_sensor_values[i - VERVE_MAX_DISCRETE_SENSORS];
+}
+static uint8_t* vg_circular(verve_agent_desc* d, uint32_t i) {
+    return i < VERVE_MAX_CONTINUOUS_SENSORS ? &d->continuous_sensor_circular[i]
+                                            : &d->more_continuous_sensor_circular[i - VERVE_MAX_CONTINUOUS_SENSORS];
+}
+
 static int vg_read_discrete_sensors(vg_call* c, const vg_option* o, const godot_variant* v, verve_agent_desc* d) {
-    int32_t values[VERVE_MAX_DISCRETE_SENSORS];
+    int32_t values[VERVE_MAX_SENSORS];
     uint32_t n = 0, i;
-    if (!vg_read_ints(c, v, o->name, values, VERVE_MAX_DISCRETE_SENSORS, &n)) return 0;
+    if (!vg_read_ints(c, v, o->name, values, VERVE_MAX_SENSORS, &n)) return 0;
     for (i = 0; i < n; ++i) {
         if (values[i] < 0) return vg_fail(c, "option '%s': value counts are not negative (got %d)", o->name, values[i]);
-        d->discrete_sensor_values[i] = (uint32_t)values[i];
+        *vg_discrete_values(d, i) = (uint32_t)values[i];
     }
     d->num_discrete_sensors = n;
     return 1;
@@ -78,16 +88,15 @@ static int vg_read_circular(vg_call* c, const vg_option* o, const godot_variant*
         return vg_option_error(c, o, "an Array of bools, one per continuous sensor", v);
     array = vg_core->godot_variant_as_array(v);
     n = vg_core->godot_array_size(&array);
-    if (n > VERVE_MAX_CONTINUOUS_SENSORS)
-        ok = vg_fail(c, "option '%s' has %d sensors; an agent has at most %d", o->name, (int)n,
-                     VERVE_MAX_CONTINUOUS_SENSORS);
+    if (n > VERVE_MAX_SENSORS)
+        ok = vg_fail(c, "option '%s' has %d sensors; an agent has at most %d", o->name, (int)n, VERVE_MAX_SENSORS);
     for (i = 0; ok && i < n; ++i) {
         const godot_variant* e = vg_core->godot_array_operator_index_const(&array, i);
         if (vg_core->godot_variant_get_type(e) != GODOT_VARIANT_TYPE_BOOL)
             ok = vg_fail(c, "option '%s'[%d] must be a bool (true: the sensor wraps around) (got %s)", o->name,
                          (int)i, vg_type_name(e));
         else
-            d->continuous_sensor_circular[i] = vg_core->godot_variant_as_bool(e) ? 1 : 0;
+            *vg_circular(d, (uint32_t)i) = vg_core->godot_variant_as_bool(e) ? 1 : 0;
     }
     vg_core->godot_array_destroy(&array);
     if (ok) d->num_continuous_sensors = (uint32_t)n;
@@ -109,7 +118,7 @@ static int vg_read_sensor_groups(vg_call* c, const vg_option* o, const godot_var
     for (g = 0; ok && g < n; ++g) {
         const godot_variant* e = vg_core->godot_array_operator_index_const(&array, g);
         godot_variant_type t = vg_core->godot_variant_get_type(e);
-        int32_t sensors[VERVE_MAX_CONTINUOUS_SENSORS];
+        int32_t sensors[VERVE_MAX_SENSORS];
         uint32_t m = 0, k;
         uint64_t mask = 0;
         char name[64];
@@ -118,12 +127,12 @@ static int vg_read_sensor_groups(vg_call* c, const vg_option* o, const godot_var
             ok = vg_fail(c, "%s must be an Array of continuous sensor indices (got %s)", name, vg_type_name(e));
             break;
         }
-        ok = vg_read_ints(c, e, name, sensors, VERVE_MAX_CONTINUOUS_SENSORS, &m);
+        ok = vg_read_ints(c, e, name, sensors, VERVE_MAX_SENSORS, &m);
         if (ok && m == 0) ok = vg_fail(c, "%s is empty", name);
         for (k = 0; ok && k < m; ++k) {
-            if (sensors[k] < 0 || sensors[k] >= VERVE_MAX_CONTINUOUS_SENSORS)
+            if (sensors[k] < 0 || sensors[k] >= VERVE_MAX_SENSORS)
                 ok = vg_fail(c, "%s[%u] must be a continuous sensor index from 0 to %d (got %d)", name, k,
-                             VERVE_MAX_CONTINUOUS_SENSORS - 1, (int)sensors[k]);
+                             VERVE_MAX_SENSORS - 1, (int)sensors[k]);
             else if (mask & ((uint64_t)1 << sensors[k]))
                 ok = vg_fail(c, "%s lists continuous sensor %d twice", name, (int)sensors[k]);
             else
@@ -151,7 +160,7 @@ static int vg_check_sensor_groups(vg_call* c, verve_agent_desc* d, int grouping_
     if (d->num_sensor_groups == 0 && n > 0)
         return vg_fail(c, "option 'grouping' \"custom\" needs 'sensor_groups' covering every continuous sensor");
     for (g = 0; g < d->num_sensor_groups; ++g) {
-        for (s = n; s < VERVE_MAX_CONTINUOUS_SENSORS; ++s)
+        for (s = n; s < VERVE_MAX_SENSORS; ++s)
             if (d->sensor_groups[g] & ((uint64_t)1 << s))
                 return vg_fail(c, "option 'sensor_groups'[%u] lists continuous sensor %u, but the agent has %u", g, s, n);
         covered |= d->sensor_groups[g];
@@ -294,12 +303,11 @@ static godot_variant vg_option_variant(const vg_option* o, const verve_agent_des
         vg_core->godot_array_new(&list);
         n = o->kind == VG_CIRCULAR ? d->num_continuous_sensors
             : o->kind == VG_ACTION_BRANCHES ? d->num_action_branches : d->num_discrete_sensors;
-        if (n > (o->kind == VG_CIRCULAR ? VERVE_MAX_CONTINUOUS_SENSORS
-                 : o->kind == VG_ACTION_BRANCHES ? VERVE_MAX_ACTION_BRANCHES : VERVE_MAX_DISCRETE_SENSORS)) n = 0;
+        if (n > (o->kind == VG_ACTION_BRANCHES ? VERVE_MAX_ACTION_BRANCHES : VERVE_MAX_SENSORS)) n = 0;
         for (i = 0; i < n; ++i) {
-            godot_variant e = o->kind == VG_CIRCULAR ? vg_variant_bool(d->continuous_sensor_circular[i])
+            godot_variant e = o->kind == VG_CIRCULAR ? vg_variant_bool(*vg_circular((verve_agent_desc*)d, i))
                               : o->kind == VG_ACTION_BRANCHES ? vg_variant_int(d->action_branches[i])
-                                                              : vg_variant_int(d->discrete_sensor_values[i]);
+                                                              : vg_variant_int(*vg_discrete_values((verve_agent_desc*)d, i));
             vg_core->godot_array_append(&list, &e);
             vg_core->godot_variant_destroy(&e);
         }

@@ -96,8 +96,8 @@ static godot_variant vg_step(void* user_data, const char* method, int argc, godo
     vg_call c;
     verve_agent* a;
     float reward = 0.0f, dt = 0.0f;
-    int32_t discrete[VERVE_MAX_DISCRETE_SENSORS];
-    float continuous[VERVE_MAX_CONTINUOUS_SENSORS];
+    int32_t discrete[VERVE_MAX_SENSORS];
+    float continuous[VERVE_MAX_SENSORS];
     int32_t flags[VG_MAX_ACTIONS];
     uint8_t mask[VG_MAX_ACTIONS];
     uint32_t n_discrete = 0, n_continuous = 0, n_mask = 0, action = 0, i;
@@ -108,8 +108,8 @@ static godot_variant vg_step(void* user_data, const char* method, int argc, godo
     if (!vg_begin(&c, user_data, method, argc, argv, 4 + extra, 4 + extra + (kind == VG_DEMONSTRATED)) ||
         !vg_agent_handle(&c, &a) ||
         !vg_arg_float(&c, 0, "reward", &reward) ||
-        !vg_read_ints(&c, argv[1], "discrete", discrete, VERVE_MAX_DISCRETE_SENSORS, &n_discrete) ||
-        !vg_read_floats(&c, argv[2], "continuous", continuous, VERVE_MAX_CONTINUOUS_SENSORS, &n_continuous) ||
+        !vg_read_ints(&c, argv[1], "discrete", discrete, VERVE_MAX_SENSORS, &n_discrete) ||
+        !vg_read_floats(&c, argv[2], "continuous", continuous, VERVE_MAX_SENSORS, &n_continuous) ||
         !vg_arg_float(&c, 3, "dt", &dt) ||
         (masked && !vg_read_ints(&c, argv[mask_arg], "mask", flags, VG_MAX_ACTIONS, &n_mask)) ||
         (kind == VG_DEMONSTRATED && !vg_arg_type(&c, 4, "action", GODOT_VARIANT_TYPE_INT)))
@@ -360,7 +360,10 @@ static int vg_read_axis(vg_call* c, const godot_variant* v, uint32_t i, const ve
     if (ok && !vg_int_in(values[1], 0, INT32_MAX, &axis->index))
         ok = vg_fail(c, "axes[%u].index must be a sensor index from 0", i);
     if (ok && !values[2] && axis->kind == VERVE_SENSOR_DISCRETE)
-        axis->samples = axis->index < d->num_discrete_sensors ? d->discrete_sensor_values[axis->index] : 0;
+        axis->samples = axis->index >= d->num_discrete_sensors || axis->index >= VERVE_MAX_SENSORS ? 0
+                        : axis->index < VERVE_MAX_DISCRETE_SENSORS
+                            ? d->discrete_sensor_values[axis->index]
+                            : d->more_discrete_sensor_values[axis->index - VERVE_MAX_DISCRETE_SENSORS];
     else if (ok && !vg_int_in(values[2], 1, VG_MAX_SAMPLES, &axis->samples))
         ok = vg_fail(c, "axes[%u].samples must be an int from 1 to %u", i, VG_MAX_SAMPLES);
     vg_core->godot_dictionary_destroy(&dict);
@@ -372,8 +375,8 @@ VG_METHOD(sample_values) {
     verve_agent* a;
     verve_agent_desc d;
     verve_value_axis axes[2];
-    int32_t discrete[VERVE_MAX_DISCRETE_SENSORS] = {0};
-    float continuous[VERVE_MAX_CONTINUOUS_SENSORS] = {0};
+    int32_t discrete[VERVE_MAX_SENSORS] = {0};
+    float continuous[VERVE_MAX_SENSORS] = {0};
     uint32_t n_discrete, n_continuous, n_axes = 0, i;
     uint64_t total;
     godot_array list;
@@ -389,8 +392,8 @@ VG_METHOD(sample_values) {
     /* Sensors not given are held at 0 (the first discrete value, the middle of a continuous range). */
     n_discrete = d.num_discrete_sensors;
     n_continuous = d.num_continuous_sensors;
-    if ((argc > 1 && !vg_read_ints(&c, argv[1], "base_discrete", discrete, VERVE_MAX_DISCRETE_SENSORS, &n_discrete)) ||
-        (argc > 2 && !vg_read_floats(&c, argv[2], "base_continuous", continuous, VERVE_MAX_CONTINUOUS_SENSORS,
+    if ((argc > 1 && !vg_read_ints(&c, argv[1], "base_discrete", discrete, VERVE_MAX_SENSORS, &n_discrete)) ||
+        (argc > 2 && !vg_read_floats(&c, argv[2], "base_continuous", continuous, VERVE_MAX_SENSORS,
                                      &n_continuous)))
         return vg_variant_nil();
     list = vg_core->godot_variant_as_array(argv[0]);

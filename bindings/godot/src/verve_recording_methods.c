@@ -57,15 +57,15 @@ VG_METHOD(add_step) {
     vg_call c;
     verve_recording* r;
     float reward = 0.0f, dt = 0.0f;
-    int32_t discrete[VERVE_MAX_DISCRETE_SENSORS];
-    float continuous[VERVE_MAX_CONTINUOUS_SENSORS];
+    int32_t discrete[VERVE_MAX_SENSORS];
+    float continuous[VERVE_MAX_SENSORS];
     uint32_t n_discrete = 0, n_continuous = 0;
     int64_t action;
     VG_UNUSED;
     if (!vg_begin_recording(&c, user_data, "add_step", argc, argv, 5, 5) || !vg_recording_handle(&c, user_data, &r) ||
         !vg_arg_float(&c, 0, "reward", &reward) ||
-        !vg_read_ints(&c, argv[1], "discrete", discrete, VERVE_MAX_DISCRETE_SENSORS, &n_discrete) ||
-        !vg_read_floats(&c, argv[2], "continuous", continuous, VERVE_MAX_CONTINUOUS_SENSORS, &n_continuous) ||
+        !vg_read_ints(&c, argv[1], "discrete", discrete, VERVE_MAX_SENSORS, &n_discrete) ||
+        !vg_read_floats(&c, argv[2], "continuous", continuous, VERVE_MAX_SENSORS, &n_continuous) ||
         !vg_arg_float(&c, 3, "dt", &dt) || !vg_arg_type(&c, 4, "action", GODOT_VARIANT_TYPE_INT))
         return vg_variant_bool(0);
     action = vg_core->godot_variant_as_int(argv[4]);

@@ -61,9 +61,9 @@ func test_bad_options():
 	check_error(agent, agent.create([3]), false, "options must be a Dictionary", "an Array for options")
 	check_error(agent, agent.create({"actions": 0}), false, "[VERVE_ERROR_INVALID_ARGUMENT]", "no actions (the library says)")
 	var many = []
-	for i in 17:
+	for i in 65:
 		many.append(true)
-	check_error(agent, agent.create({"continuous_sensor_circular": many}), false, "at most 16", "17 sensors")
+	check_error(agent, agent.create({"continuous_sensor_circular": many}), false, "at most 64", "65 sensors")
 	check(agent.has_agent() and agent.get_options().hash() == before, "a failed create() keeps the agent")
 
 
@@ -89,7 +89,7 @@ func test_update():
 	check_error(a, a.update(0.0, [1], ["x", 0.5], 0.1), -1, "continuous[0] must be a number (got String)", "a String value")
 	check_error(a, a.update(0.0, [1.0], [0.5, 0.5], 0.1), -1, "discrete[0] must be an int", "a float discrete value")
 	check_error(a, a.update("0", [1], [0.5, 0.5], 0.1), -1, "reward must be a number", "a String reward")
-	check_error(a, a.update(0.0, [1], PoolRealArray(range(17)), 0.1), -1, "at most 16", "17 values")
+	check_error(a, a.update(0.0, [1], PoolRealArray(range(65)), 0.1), -1, "at most 64", "65 values")
 	check_error(a, a.update(0.0, [1]), -1, "takes 4 arguments (got 2)", "two arguments")
 	check_error(a, a.update(0.0, [1], Vector2(), 0.1), -1, "got Vector2", "a Vector2")
 	check(a.get_stats()["steps"] == steps, "refused updates change nothing")

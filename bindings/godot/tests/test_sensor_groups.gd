@@ -137,8 +137,8 @@ func test_refusals():
 		[{"sensor_groups": 3}, "option 'sensor_groups' must be an Array of groups of continuous sensor indices"],
 		[{"sensor_groups": [1, 2]}, "option 'sensor_groups'[0] must be an Array of continuous sensor indices (got int)"],
 		[{"sensor_groups": [[0, 1], []]}, "option 'sensor_groups'[1] is empty"],
-		[{"sensor_groups": [[0, -1]]}, "option 'sensor_groups'[0][1] must be a continuous sensor index from 0 to 15 (got -1)"],
-		[{"sensor_groups": [[16]]}, "from 0 to 15 (got 16)"],
+		[{"sensor_groups": [[0, -1]]}, "option 'sensor_groups'[0][1] must be a continuous sensor index from 0 to 63 (got -1)"],
+		[{"sensor_groups": [[64]]}, "from 0 to 63 (got 64)"],
 		[{"sensor_groups": [[0.5]]}, "option 'sensor_groups'[0][0] must be an int (got float)"],
 		[{"sensor_groups": [[0, 1, 0]]}, "option 'sensor_groups'[0] lists continuous sensor 0 twice"],
 		[{"sensor_groups": [[0, 1], [2, 3, 4]]}, "option 'sensor_groups'[1] lists continuous sensor 4, but the agent has 4"],
@@ -159,7 +159,44 @@ func test_refusals():
 	new_agent({"discrete_sensors": [3], "grouping": "custom"})  # no continuous sensors: no group needed
 
 
+# 32 sensors of each kind (up to 64): the options there and back, a save that acts the same, and
+# the lattice limit (one joint lattice over more than 16 sensors is refused).
+func test_32_sensors():
+	var discrete = []
+	var circular = []
+	for i in 32:
+		discrete.append(2 if i % 8 == 0 else 1)
+		circular.append(i % 5 == 0)
+	var options = {"discrete_sensors": discrete, "continuous_sensor_circular": circular, "actions": 4, "seed": 5}
+	var a = new_agent(options)
+	var o = a.get_options()
+	check(o["discrete_sensors"] == discrete and o["continuous_sensor_circular"] == circular,
+		"32 sensors of each kind come back")
+	var d = []
+	for i in 32:
+		d.append(0)
+	for step in 200:
+		d[0] = (step / 3) % 2
+		a.update(sin(0.05 * step), d, readings(step, 32), 0.1)
+	check(a.get_rbf_count() >= 63, "auto: a lattice per sensor and per pair (%d RBFs)" % a.get_rbf_count())
+	var copy = VerveAgent.new()
+	check(copy.load_bytes(a.save_bytes()), "load_bytes: " + copy.get_last_error())
+	var same = true
+	for step in range(200, 260):
+		same = same and a.update(0.0, d, readings(step, 32), 0.1) == copy.update(0.0, d, readings(step, 32), 0.1)
+	check(same, "a loaded 32-sensor agent acts the same")
+	var joint = VerveAgent.new()
+	options["grouping"] = "joint"
+	check_error(joint, joint.create(options), false, "which spans at most 16", "one joint lattice over 32 sensors")
+	var too_many = []
+	for i in 65:
+		too_many.append(false)
+	check_error(joint, joint.create({"continuous_sensor_circular": too_many}), false,
+		"has 65 sensors; an agent has at most 64", "65 continuous sensors")
+
+
 func _init():
+	test_32_sensors()
 	test_auto_and_joint()
 	test_custom()
 	test_saves_and_brains()

@@ -12,8 +12,8 @@
 #define LV_AGENT_MT "verve.agent"
 
 typedef struct lv_obs {
-    int32_t discrete[VERVE_MAX_DISCRETE_SENSORS]; /* 0-based, as the C ABI wants them */
-    float continuous[VERVE_MAX_CONTINUOUS_SENSORS];
+    int32_t discrete[VERVE_MAX_SENSORS]; /* 0-based, as the C ABI wants them */
+    float continuous[VERVE_MAX_SENSORS];
     uint32_t n_discrete;
     uint32_t n_continuous;
 } lv_obs;

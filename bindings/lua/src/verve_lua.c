@@ -44,8 +44,8 @@ typedef struct lv_batch {
     uint32_t capacity;   /* agents the arrays hold */
     verve_agent** agents;
     float* rewards;
-    int32_t* discrete;   /* VERVE_MAX_DISCRETE_SENSORS per agent */
-    float* continuous;   /* VERVE_MAX_CONTINUOUS_SENSORS per agent */
+    int32_t* discrete;   /* VERVE_MAX_SENSORS per agent */
+    float* continuous;   /* VERVE_MAX_SENSORS per agent */
     uint32_t* actions;
     uint32_t* demonstrated; /* batch:update's optional demonstrated actions (0-based, VERVE_AGENT_CHOOSES) */
 } lv_batch;
@@ -226,16 +226,31 @@ static void lv_push_field(lua_State* L, const lv_field* f, const verve_agent_des
     }
 }
 
+/* Sensor i's entry in the desc: the first 16 in the V1-V7 arrays, the rest in V8's. */
+static uint32_t* lv_discrete_values(verve_agent_desc* d, uint32_t i) {
+    return i < VERVE_MAX_DISCRETE_SENSORS ? &d->discrete_sensor_values[i]
+                                          : &d->more_discrete_sensor_values[i - VERVE_MAX_DISCRETE_SENSORS];
+}
+static uint8_t* lv_circular(verve_agent_desc* d, uint32_t i) {
+    return i < VERVE_MAX_CONTINUOUS_SENSORS ? &d->continuous_sensor_circular[i]
+                                            : &d->more_continuous_sensor_circular[i - VERVE_MAX_CONTINUOUS_SENSORS];
+}
+
+static uint32_t lv_discrete_count(const verve_agent_desc* d, uint32_t i) {
+    return i < VERVE_MAX_DISCRETE_SENSORS ? d->discrete_sensor_values[i]
+                                          : d->more_discrete_sensor_values[i - VERVE_MAX_DISCRETE_SENSORS];
+}
+
 /* discrete = {values of sensor 1, values of sensor 2, ...}, the value on top of the stack. */
 static void lv_read_discrete_sensors(lua_State* L, verve_agent_desc* d) {
     uint32_t n, i;
     if (!lua_istable(L, -1)) lv_desc_error(L, "discrete", "a list of value counts");
     n = (uint32_t)lua_rawlen(L, -1);
-    if (n > VERVE_MAX_DISCRETE_SENSORS)
-        luaL_error(L, "verve: agent: %d discrete sensors; at most %d", (int)n, VERVE_MAX_DISCRETE_SENSORS);
+    if (n > VERVE_MAX_SENSORS)
+        luaL_error(L, "verve: agent: %d discrete sensors; at most %d", (int)n, VERVE_MAX_SENSORS);
     for (i = 0; i < n; ++i) {
         lua_rawgeti(L, -1, (int)i + 1);
-        if (!lv_get_u32(L, -1, &d->discrete_sensor_values[i]))
+        if (!lv_get_u32(L, -1, lv_discrete_values(d, i)))
             lv_desc_error(L, "discrete", "a list of non-negative integer value counts");
         lua_pop(L, 1);
     }
@@ -248,17 +263,17 @@ static void lv_read_continuous_sensors(lua_State* L, verve_agent_desc* d) {
     int listed = lua_istable(L, -1);
     if (listed) n = (uint32_t)lua_rawlen(L, -1);
     else if (!lv_get_u32(L, -1, &n)) lv_desc_error(L, "continuous", "a sensor count or a list of sensor tables");
-    if (n > VERVE_MAX_CONTINUOUS_SENSORS)
-        luaL_error(L, "verve: agent: %d continuous sensors; at most %d", (int)n, VERVE_MAX_CONTINUOUS_SENSORS);
+    if (n > VERVE_MAX_SENSORS)
+        luaL_error(L, "verve: agent: %d continuous sensors; at most %d", (int)n, VERVE_MAX_SENSORS);
     for (i = 0; i < n; ++i) {
-        d->continuous_sensor_circular[i] = 0;
+        *lv_circular(d, i) = 0;
         if (!listed) continue;
         lua_rawgeti(L, -1, (int)i + 1);
         if (!lua_istable(L, -1)) lv_desc_error(L, "continuous", "a list of sensor tables like {circular = true}");
         lv_check_keys(L, -1, lv_sensor_keys, "agent", "continuous sensor");
         lua_getfield(L, -1, "circular");
         if (!lua_isnil(L, -1) && !lua_isboolean(L, -1)) lv_desc_error(L, "circular", "a boolean");
-        d->continuous_sensor_circular[i] = (uint8_t)(lua_toboolean(L, -1) ? 1 : 0);
+        *lv_circular(d, i) = (uint8_t)(lua_toboolean(L, -1) ? 1 : 0);
         lua_pop(L, 2);
     }
     d->num_continuous_sensors = n;
@@ -284,9 +299,9 @@ static void lv_read_sensor_groups(lua_State* L, verve_agent_desc* d) {
         for (k = 0; k < m; ++k) {
             lua_Integer s = 0;
             lua_rawgeti(L, -1, (int)k + 1);
-            if (!lv_tointeger(L, -1, &s) || s < 1 || s > VERVE_MAX_CONTINUOUS_SENSORS)
+            if (!lv_tointeger(L, -1, &s) || s < 1 || s > VERVE_MAX_SENSORS)
                 luaL_error(L, "verve: agent: sensor_groups[%d][%d] must be a continuous sensor from 1 to %d (got %s)",
-                           (int)g + 1, (int)k + 1, VERVE_MAX_CONTINUOUS_SENSORS,
+                           (int)g + 1, (int)k + 1, VERVE_MAX_SENSORS,
                            lua_type(L, -1) == LUA_TNUMBER ? lua_tostring(L, -1) : luaL_typename(L, -1));
             if (mask & ((uint64_t)1 << (s - 1)))
                 luaL_error(L, "verve: agent: sensor_groups[%d] lists continuous sensor %d twice", (int)g + 1, (int)s);
@@ -314,7 +329,7 @@ static void lv_check_sensor_groups(lua_State* L, verve_agent_desc* d, int groupi
     if (d->num_sensor_groups == 0 && n > 0)
         luaL_error(L, "verve: agent: grouping = \"custom\" needs sensor_groups covering every continuous sensor");
     for (g = 0; g < d->num_sensor_groups; ++g) {
-        for (s = n; s < VERVE_MAX_CONTINUOUS_SENSORS; ++s)
+        for (s = n; s < VERVE_MAX_SENSORS; ++s)
             if (d->sensor_groups[g] & ((uint64_t)1 << s))
                 luaL_error(L, "verve: agent: sensor_groups[%d] lists continuous sensor %d, but the agent has %d",
                            (int)g + 1, (int)s + 1, (int)n);
@@ -368,15 +383,16 @@ static void lv_push_desc(lua_State* L, const verve_agent_desc* d) {
     size_t f;
     lua_createtable(L, 0, (int)LV_FIELD_COUNT + 5);
     lua_createtable(L, (int)d->num_discrete_sensors, 0);
-    for (i = 0; i < d->num_discrete_sensors && i < VERVE_MAX_DISCRETE_SENSORS; ++i) {
-        lua_pushinteger(L, (lua_Integer)d->discrete_sensor_values[i]);
+    for (i = 0; i < d->num_discrete_sensors && i < VERVE_MAX_SENSORS; ++i) {
+        lua_pushinteger(L, (lua_Integer)lv_discrete_count(d, i));
         lua_rawseti(L, -2, (int)i + 1);
     }
     lua_setfield(L, -2, "discrete");
     lua_createtable(L, (int)d->num_continuous_sensors, 0);
-    for (i = 0; i < d->num_continuous_sensors && i < VERVE_MAX_CONTINUOUS_SENSORS; ++i) {
+    for (i = 0; i < d->num_continuous_sensors && i < VERVE_MAX_SENSORS; ++i) {
         lua_createtable(L, 0, 1);
-        lua_pushboolean(L, d->continuous_sensor_circular[i] != 0);
+        lua_pushboolean(L, (i < VERVE_MAX_CONTINUOUS_SENSORS ? d->continuous_sensor_circular[i]
+                                                             : d->more_continuous_sensor_circular[i - VERVE_MAX_CONTINUOUS_SENSORS]) != 0);
         lua_setfield(L, -2, "circular");
         lua_rawseti(L, -2, (int)i + 1);
     }
@@ -409,7 +425,7 @@ static void lv_push_desc(lua_State* L, const verve_agent_desc* d) {
  * shifted to 0-based when `discrete` is set. */
 static uint32_t lv_read_obs_list(lua_State* L, int obs, const char* fn, const char* key, int discrete, int raw,
                                  lv_obs* o) {
-    uint32_t n, i, max = discrete ? VERVE_MAX_DISCRETE_SENSORS : VERVE_MAX_CONTINUOUS_SENSORS;
+    uint32_t n, i, max = VERVE_MAX_SENSORS;
     if (raw) {
         lua_pushstring(L, key);
         lua_rawget(L, obs);
@@ -759,7 +775,7 @@ static void lv_read_axis(lua_State* L, const verve_agent_desc* d, verve_value_ax
     lua_pop(L, 1);
     lua_getfield(L, -1, "samples");
     if (lua_isnil(L, -1) && axis->kind == VERVE_SENSOR_DISCRETE) /* no such sensor: the library says so */
-        axis->samples = axis->index < d->num_discrete_sensors ? d->discrete_sensor_values[axis->index] : 0;
+        axis->samples = axis->index < d->num_discrete_sensors && axis->index < VERVE_MAX_SENSORS ? lv_discrete_count(d, axis->index) : 0;
     else if (!lv_get_u32(L, -1, &axis->samples))
         luaL_error(L, "verve: sample_values: axis samples must be a non-negative integer (got %s)",
                    luaL_typename(L, -1));
@@ -1007,8 +1023,8 @@ static void lv_batch_reserve(lua_State* L, lv_batch* b, uint32_t n) {
     lv_batch_free_arrays(b);
     b->agents = (verve_agent**)malloc(n * sizeof *b->agents);
     b->rewards = (float*)malloc(n * sizeof *b->rewards);
-    b->discrete = (int32_t*)malloc((size_t)n * VERVE_MAX_DISCRETE_SENSORS * sizeof *b->discrete);
-    b->continuous = (float*)malloc((size_t)n * VERVE_MAX_CONTINUOUS_SENSORS * sizeof *b->continuous);
+    b->discrete = (int32_t*)malloc((size_t)n * VERVE_MAX_SENSORS * sizeof *b->discrete);
+    b->continuous = (float*)malloc((size_t)n * VERVE_MAX_SENSORS * sizeof *b->continuous);
     b->actions = (uint32_t*)malloc(n * sizeof *b->actions);
     b->demonstrated = (uint32_t*)malloc(n * sizeof *b->demonstrated);
     if (!b->agents || !b->rewards || !b->discrete || !b->continuous || !b->actions || !b->demonstrated) {

@@ -73,8 +73,10 @@ T.check("binding-side refusals name the field", function()
   bad({ [1] = 5 }, "descriptor fields are names %(got a number key%)")
   bad({ discrete = 5 }, "'discrete' must be a list of value counts")
   bad({ discrete = { 4, "x" } }, "'discrete' must be a list of non%-negative integer value counts")
-  bad({ discrete = { 2, 2, 2, 2, 2, 2, 2, 2, 2, 2, 2, 2, 2, 2, 2, 2, 2 } }, "17 discrete sensors; at most 16")
-  bad({ continuous = 17 }, "17 continuous sensors; at most 16")
+  local many = {}
+  for i = 1, 65 do many[i] = 1 end
+  bad({ discrete = many }, "65 discrete sensors; at most 64")
+  bad({ continuous = 65 }, "65 continuous sensors; at most 64")
   bad({ continuous = "two" }, "'continuous' must be a sensor count or a list of sensor tables")
   bad({ continuous = { true } }, "'continuous' must be a list of sensor tables")
   bad({ continuous = { { circular = "yes" } } }, "'circular' must be a boolean")

@@ -3,8 +3,11 @@
 // defaults into a verve_agent_desc, and read back from one.
 import { invalidArgument } from './errors.js';
 
-export const MAX_DISCRETE_SENSORS = 16;
-export const MAX_CONTINUOUS_SENSORS = 16;
+// Sensors of each kind (a sensor group is a 64-bit mask); the C struct keeps sensors 16 and up
+// in arrays of their own (its V8 fields), so older hosts' structs keep their layout.
+export const MAX_DISCRETE_SENSORS = 64;
+export const MAX_CONTINUOUS_SENSORS = 64;
+const FIRST_ARRAY = 16;  // VERVE_MAX_DISCRETE_SENSORS, VERVE_MAX_CONTINUOUS_SENSORS
 export const MAX_SENSOR_GROUPS = 64;
 export const MAX_ACTION_BRANCHES = 8;
 export const MAX_CONTINUOUS_ACTIONS = 8;
@@ -21,9 +24,9 @@ export const L = Object.freeze({
   statsModelError: 33, statsPredictedUncertainty: 34, statsPlanningSteps: 35, statsCuriosityReward: 36,
   statsRbfBudgetHits: 37, statsClampedRewards: 38, batchWorkerCount: 39, adaptation: 40,
   sensorGrouping: 41, numSensorGroups: 42, sensorGroups: 43, numActionBranches: 44, actionBranches: 45,
-  numContinuousActions: 46,
+  numContinuousActions: 46, moreDiscreteValues: 47, moreCircular: 48,
 });
-export const LAYOUT_LENGTH = 47;
+export const LAYOUT_LENGTH = 49;
 
 const ENUMS = {
   allocation: ['dynamic', 'full'],
@@ -244,16 +247,20 @@ export function writeDescriptor(heap, layout, ptr, desc) {
   const at = (field) => ptr + layout[L[field]];
   if (desc.discrete) {
     u32[at('numDiscrete') >> 2] = desc.discrete.length;
-    desc.discrete.forEach((v, i) => { u32[(at('discreteValues') >> 2) + i] = v; });
+    desc.discrete.forEach((v, i) => {
+      u32[i < FIRST_ARRAY ? (at('discreteValues') >> 2) + i : (at('moreDiscreteValues') >> 2) + i - FIRST_ARRAY] = v;
+    });
   }
   if (desc.continuous) {
     u32[at('numContinuous') >> 2] = desc.continuous.length;
-    desc.continuous.forEach((s, i) => { u8[at('circular') + i] = s.circular ? 1 : 0; });
+    desc.continuous.forEach((s, i) => {
+      u8[i < FIRST_ARRAY ? at('circular') + i : at('moreCircular') + i - FIRST_ARRAY] = s.circular ? 1 : 0;
+    });
   }
   if (desc.sensorGroups) {
     u32[at('numSensorGroups') >> 2] = desc.sensorGroups.length;
     desc.sensorGroups.forEach((group, g) => {
-      let low = 0, high = 0;  // bit s: continuous sensor s; sensors are below 16, so high stays 0 today
+      let low = 0, high = 0;  // bit s: continuous sensor s (up to 63)
       for (const s of group) {
         if (s < 32) low |= 1 << s;
         else high |= 1 << (s - 32);
@@ -313,8 +320,10 @@ export function readDescriptor(heap, layout, ptr) {
   const nd = u32[at('numDiscrete') >> 2];
   const nc = u32[at('numContinuous') >> 2];
   const desc = {
-    discrete: Array.from({ length: Math.min(nd, MAX_DISCRETE_SENSORS) }, (_, i) => u32[(at('discreteValues') >> 2) + i]),
-    continuous: Array.from({ length: Math.min(nc, MAX_CONTINUOUS_SENSORS) }, (_, i) => ({ circular: u8[at('circular') + i] !== 0 })),
+    discrete: Array.from({ length: Math.min(nd, MAX_DISCRETE_SENSORS) }, (_, i) =>
+      u32[i < FIRST_ARRAY ? (at('discreteValues') >> 2) + i : (at('moreDiscreteValues') >> 2) + i - FIRST_ARRAY]),
+    continuous: Array.from({ length: Math.min(nc, MAX_CONTINUOUS_SENSORS) }, (_, i) =>
+      ({ circular: u8[i < FIRST_ARRAY ? at('circular') + i : at('moreCircular') + i - FIRST_ARRAY] !== 0 })),
     actionBranches: Array.from({ length: Math.min(u32[at('numActionBranches') >> 2], MAX_ACTION_BRANCHES) },
       (_, b) => u32[(at('actionBranches') >> 2) + b]),
     // A uint64 the library keeps within 0..8: its high word is 0.

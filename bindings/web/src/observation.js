@@ -15,7 +15,7 @@ function list(what, value, max) {
   return value;
 }
 
-/** {discrete, continuous} checked: integers and numbers, at most 16 of each. */
+/** {discrete, continuous} checked: integers and numbers, at most 64 of each. */
 export function checkObservation(what, obs) {
   if (obs === undefined || obs === null) return { discrete: [], continuous: [] };
   if (typeof obs !== 'object' || Array.isArray(obs) || ArrayBuffer.isView(obs)) {

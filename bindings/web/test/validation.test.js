@@ -30,7 +30,7 @@ test('updates: NaN, infinities, wrong counts and types, absurd lengths', () => {
   refused(agent, () => agent.update('0', ok, 0.1), undefined, /reward must be a number/);
   refused(agent, () => agent.update(0, ok), undefined, /dt must be a number/);
   refused(agent, () => agent.update(0, [1, 2], 0.1), undefined, /object/);
-  refused(agent, () => agent.update(0, { discrete: [1], continuous: new Array(1e7).fill(0) }, 0.1), undefined, /at most 16/);
+  refused(agent, () => agent.update(0, { discrete: [1], continuous: new Array(1e7).fill(0) }, 0.1), undefined, /at most 64/);
   refused(agent, () => agent.update(0, { discrete: { length: 2 ** 32 - 1 } }, 0.1), undefined, /array/);
   refused(agent, () => agent.update(0, ok, 0.1, [true, false]), undefined, /mask has 2 entries/);
   refused(agent, () => agent.update(0, ok, 0.1, new Uint8Array(2 ** 28)), undefined, /mask has/);
@@ -77,8 +77,8 @@ test('descriptors: unknown fields, wrong types and values the library refuses', 
     [{ tauValue: '0.1' }, /number/],
     [{ seed: -1 }, /seed/],
     [{ seed: 2 ** 64 }, /seed/],
-    [{ discrete: new Array(17).fill(2) }, /at most 16/],
-    [{ continuous: 17 }, /continuous/],
+    [{ discrete: new Array(65).fill(2) }, /at most 64/],
+    [{ continuous: 65 }, /continuous/],
     [{ continuous: [{ circular: 1 }] }, /boolean/],
     [{ continuous: [{ wraps: true }] }, /unknown field/],
     [{ allocation: 'all' }, /'dynamic', 'full'/],

@@ -30,6 +30,8 @@ static const uint32_t layout[] = {
     D(num_action_branches), D(action_branches),
     /* 46: verve_agent_desc, V7 */
     D(num_continuous_actions),
+    /* 47: verve_agent_desc, V8: sensors 16..63 */
+    D(more_discrete_sensor_values), D(more_continuous_sensor_circular),
 };
 
 /* The table above and its length. */

@@ -11,8 +11,10 @@ namespace Verve.Native
     [StructLayout(LayoutKind.Sequential)]
     internal unsafe struct verve_agent_desc
     {
-        public const int MaxDiscreteSensors = 16;   // VERVE_MAX_DISCRETE_SENSORS
-        public const int MaxContinuousSensors = 16; // VERVE_MAX_CONTINUOUS_SENSORS
+        public const int MaxDiscreteSensors = 16;   // VERVE_MAX_DISCRETE_SENSORS (the V1-V7 arrays)
+        public const int MaxContinuousSensors = 16; // VERVE_MAX_CONTINUOUS_SENSORS (the V1-V7 arrays)
+        public const int MaxSensors = 64;           // VERVE_MAX_SENSORS (of each kind, with V8)
+        public const int MaxLatticeSensors = 16;    // VERVE_MAX_LATTICE_SENSORS
         public const int MaxSensorGroups = 64;      // VERVE_MAX_SENSOR_GROUPS
         public const int MaxActionBranches = 8;     // VERVE_MAX_ACTION_BRANCHES
         public const int MaxContinuousActions = 8;  // VERVE_MAX_CONTINUOUS_ACTIONS
@@ -51,6 +53,8 @@ namespace Verve.Native
         public uint num_action_branches; // V6
         public fixed uint action_branches[MaxActionBranches]; // choices per branch
         public ulong num_continuous_actions; // V7: 64 bits so it starts where V6 ended (V6's tail padding)
+        public fixed uint more_discrete_sensor_values[MaxSensors - MaxDiscreteSensors]; // V8: sensors 16..63
+        public fixed byte more_continuous_sensor_circular[MaxSensors - MaxContinuousSensors];
     }
 
     [StructLayout(LayoutKind.Sequential)]
