@@ -9,8 +9,10 @@
  *    verve_last_error() returns a message for the calling thread.
  *  - No exception, abort or assert reaches the host on any input, NULL pointers included.
  *  - Arrays are passed as pointer + count. Structs are plain and blittable.
- *  - verve_agent_desc starts with struct_size: fill it with verve_agent_desc_default(), so a host
- *    compiled against an older, smaller struct keeps working with a newer library.
+ *  - verve_agent_desc starts with struct_size: fill it with verve_agent_desc_init(&d, sizeof d),
+ *    which writes only the host's own struct, so a host compiled against an older, smaller struct
+ *    keeps working with a newer library (verve_agent_desc_default writes the library's whole
+ *    struct: safe only with the header the library was built from).
  *
  * Thread rules
  *  - One agent is used by one thread at a time. Different agents may be used concurrently.

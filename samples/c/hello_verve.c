@@ -16,7 +16,7 @@ int main(void) {
     verve_agent_desc desc;
     int trial;
 
-    verve_agent_desc_default(&desc);  /* defaults, and struct_size for this header */
+    verve_agent_desc_init(&desc, sizeof desc);  /* defaults; writes only this header's struct */
     desc.num_continuous_sensors = 1;  /* the position, in [-1, 1] */
     desc.num_actions = 2;             /* 0: step left, 1: step right */
     TRY(verve_agent_create(&desc, &agent));

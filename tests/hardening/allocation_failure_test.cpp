@@ -53,7 +53,7 @@ public:
             uint32_t action = 0;
             if (i % 8 == 1 && desc_.num_continuous_actions > 0) {  // with the teacher's continuous actions
                 const float steer[2] = {c[0], i % 16 == 1 ? 1.0f : -0.5f};
-                return verve_agent_update_demonstrated_continuous(agent_, -0.1f, &disc, 1, c, 2, 0.1f, nullptr, 0,
+                return verve_agent_update_demonstrated_continuous(agent_, -0.1f, disc.data(), nd, c.data(), nc, 0.1f, nullptr, 0,
                                                                   static_cast<uint32_t>(i % 2), steer, 2);
             }
             if (i % 4 == 1) {  // a demonstrated step (docs/teaching.md)
