@@ -59,7 +59,7 @@ void lv_push_action_branches(lua_State* L, const verve_agent_desc* d) {
 static uint32_t lv_branch_count(lua_State* L, const char* fn) {
     verve_agent_desc d;
     verve_result r;
-    verve_agent_desc_default(&d);
+    verve_agent_desc_init(&d, (uint32_t)sizeof d);
     r = verve_agent_get_desc(lv_open_agent(L), &d);
     if (r != VERVE_OK) lv_fail(L, fn, r);
     return d.num_action_branches == 0 ? 1 : d.num_action_branches;
@@ -114,7 +114,7 @@ int lv_continuous_action(lua_State* L) {
     luaL_checkudata(L, 1, LV_AGENT_MT);
     if (!lua_isnoneornil(L, 2)) luaL_checktype(L, 2, LUA_TTABLE);
     a = lv_open_agent(L);
-    verve_agent_desc_default(&d);
+    verve_agent_desc_init(&d, (uint32_t)sizeof d);
     r = verve_agent_get_desc(a, &d); /* the count the library wants: num_continuous_actions */
     if (r == VERVE_OK) {
         n = d.num_continuous_actions > VERVE_MAX_CONTINUOUS_ACTIONS ? VERVE_MAX_CONTINUOUS_ACTIONS

@@ -29,6 +29,9 @@ int lv_get_u32(lua_State* L, int idx, uint32_t* out);
 verve_agent* lv_open_agent(lua_State* L);
 /* {discrete = {...}, continuous = {...}} at idx (nil: no sensors), values shifted to 0-based. */
 void lv_read_obs(lua_State* L, int idx, const char* fn, int raw, lv_obs* o);
+/* Refuses keys other than `allowed` (a NULL-terminated list) in the table at idx: a typo must not
+ * pass silently. */
+void lv_check_keys(lua_State* L, int idx, const char* const* allowed, const char* fn, const char* what);
 /* A metatable `name` with methods as __index and the metamethods in `meta`. */
 void lv_register_type(lua_State* L, const char* name, const luaL_Reg* meta, const luaL_Reg* methods);
 
