@@ -207,16 +207,18 @@ extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size) {
                 const uint32_t branches = d.num_action_branches == 0 ? 1 : d.num_action_branches;
                 const uint32_t n = in.ConsumeBool() ? branches : in.ConsumeIntegralInRange<uint32_t>(0, VERVE_MAX_ACTION_BRANCHES + 2);
                 const uint32_t action = in.ConsumeBool() ? in.ConsumeIntegralInRange<uint32_t>(0, d.num_actions - 1) : in.ConsumeIntegral<uint32_t>();
+                // Random choices joined first: the split's result, and its message when refused,
+                // must be the last call's (a later successful call clears the message).
+                if (in.ConsumeBool()) {
+                    for (uint32_t& c : choices) c = in.ConsumeIntegralInRange<uint32_t>(0, 5);
+                    uint32_t joined = UINT32_MAX;
+                    if (verve_agent_join_action(agent, choices, n, &joined) == VERVE_OK) VERVE_FUZZ_CHECK(joined < d.num_actions);
+                }
                 r = verve_agent_split_action(agent, action, choices, n);
                 VERVE_FUZZ_CHECK((r == VERVE_OK) == (n == branches && action < d.num_actions));
                 if (r == VERVE_OK) {
                     uint32_t back = UINT32_MAX;
                     VERVE_FUZZ_CHECK(verve_agent_join_action(agent, choices, n, &back) == VERVE_OK && back == action);
-                }
-                if (in.ConsumeBool()) {
-                    for (uint32_t& c : choices) c = in.ConsumeIntegralInRange<uint32_t>(0, 5);
-                    uint32_t joined = UINT32_MAX;
-                    if (verve_agent_join_action(agent, choices, n, &joined) == VERVE_OK) VERVE_FUZZ_CHECK(joined < d.num_actions);
                 }
                 break;
             }
