@@ -1,6 +1,7 @@
 // Many agents per frame through the C ABI (docs/performance.md, scripts/bench_crowd.sh): one
 // verve_batch_update of 100 to 10,000 agents, tiny (2 continuous sensors, resolution 8, 2
-// actions; also without the fine lattice, 1,000 and 10,000 of them) or cart-pole-shaped (4 continuous, resolution 8, 3 actions, ~676 RBFs each), as
+// actions) or cart-pole-shaped (4 continuous, resolution 8, 3 actions, ~676 RBFs each); each shape
+// also with one lattice (the fine lattice or the groups beside cleared; 1,000 and 10,000 agents), as
 // separate agents or as bodies of one shared brain, on 1 or 2 threads; and, as the baseline, the
 // same agents updated one verve_agent_update call after another. 60 Hz x 10,000 agents = 600k/s.
 #include <benchmark/benchmark.h>
@@ -24,11 +25,14 @@ void check(verve_result r) {
 struct Shape {
     const char* name;
     uint32_t sensors, actions, rbfs;  // rbfs: how many the warm agent has before it is copied
-    bool fineLattice = true;          // false: the adaptation bit cleared, one lattice (the cost of the fine one)
+    // Adaptation bits cleared: one lattice, to show the cost of the fine one (1-2 sensors) or of
+    // the groups beside a lattice of 3-4 sensors.
+    uint64_t cleared = 0;
 };
 const Shape kTiny{"tiny", 2, 2, 0};
-const Shape kTinyOneLattice{"tiny_one_lattice", 2, 2, 0, false};
+const Shape kTinyOneLattice{"tiny_one_lattice", 2, 2, 0, VERVE_ADAPT_FINE_LATTICE};
 const Shape kCartPole{"cart_pole", 4, 3, 676};
+const Shape kCartPoleOneLattice{"cart_pole_one_lattice", 4, 3, 676, VERVE_ADAPT_PAIRS_BESIDE};
 
 void frame(const Shape& s, uint64_t t, float* out) { verve::bench::crowdFrame(s.sensors, t, out); }
 
@@ -40,7 +44,7 @@ std::string warmAgentSave(const Shape& s) {
     d.num_continuous_sensors = s.sensors;
     d.resolution = 8;
     d.num_actions = s.actions;
-    if (!s.fineLattice) d.adaptation &= ~uint64_t(VERVE_ADAPT_FINE_LATTICE);
+    d.adaptation &= ~s.cleared;
     verve_agent* a = nullptr;
     check(verve_agent_create(&d, &a));
     std::vector<float> obs(s.sensors);
@@ -135,9 +139,9 @@ void BM_Crowd(benchmark::State& state, const Shape& s, uint32_t n, bool shared, 
 }
 
 int registerAll() {
-    for (const Shape* s : {&kTiny, &kTinyOneLattice, &kCartPole}) {
+    for (const Shape* s : {&kTiny, &kTinyOneLattice, &kCartPole, &kCartPoleOneLattice}) {
         for (uint32_t n : {100u, 1000u, 3000u, 10000u}) {
-            if (!s->fineLattice && n != 1000u && n != 10000u) continue;  // the fine lattice's cost: two sizes
+            if (s->cleared != 0 && n != 1000u && n != 10000u) continue;  // one lattice's rows: two sizes
             for (bool shared : {false, true}) {
                 for (uint32_t threads : {0u, 1u, 2u}) {
                     const std::string name = std::string("crowd/") + s->name + "/" + std::to_string(n) +

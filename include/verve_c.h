@@ -197,7 +197,10 @@ typedef struct verve_agent_desc {
 #define VERVE_ADAPT_FINE_LATTICE 16u /* one or two continuous sensors get a second RBF lattice at twice
                                         the resolution beside the first (saves made without it keep
                                         their one lattice) */
-#define VERVE_ADAPT_ALL 31u
+#define VERVE_ADAPT_PAIRS_BESIDE 32u /* three or four continuous sensors under VERVE_GROUPING_AUTO get,
+                                        beside their lattice, one over each neighbouring pair (saves
+                                        made without it keep their one lattice) */
+#define VERVE_ADAPT_ALL 63u
 
 /* The sizes of verve_agent_desc a library accepts in struct_size: each release's full struct.
  * V1 ended after `seed` (no planning fields); V2 after discrete_prediction; V3 after

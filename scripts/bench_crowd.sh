@@ -1,6 +1,6 @@
 #!/usr/bin/env bash
 # Many agents per frame (docs/performance.md): builds verve_crowd_bench, runs every configuration
-# (tiny and cart-pole-shaped agents, the tiny ones also with one lattice; 100 to 10,000 of them;
+# (tiny and cart-pole-shaped agents, each also with one lattice; 100 to 10,000 of them;
 # separate brains or one shared brain; a plain update loop, then the batch call on 1 and 2
 # threads), 3 repetitions each, and prints the median updates per second and its ratio to the
 # target for 10,000 agents of its shape: 600,000/s (60 Hz) for the cart-pole shape, 2,000,000/s

@@ -54,7 +54,7 @@ hot-plate-2d                       50   301  steps    271   301  optimal_~2.8
 hot-plate-2d-continuous            50   301  steps    271   301  optimal_~2.8
 signaled-hot-plate-2d              30  1601  steps   1441  1601  optimal_~9.5
 signaled-hot-plate-2d-continuous   30  1601  steps   1441  1601  optimal_~9.5
-signaled-hot-plate-1d-2-distractors   20   301  steps    271   301  optimal_~9.5_(4_sensors:_one_lattice)
+signaled-hot-plate-1d-2-distractors   20   301  steps    271   301  optimal_~9.5_(4_sensors:_one_lattice,_pairs_beside)
 signaled-hot-plate-1d-6-distractors   20   301  steps    271   301  optimal_~9.5_(8_sensors:_groups)
 signaled-hot-plate-1d-14-distractors  20   301  steps    271   301  optimal_~9.5_(16_sensors:_groups)
 signaled-hot-plate-1d-30-distractors  20   301  steps    271   301  optimal_~9.5_(32_sensors:_groups)

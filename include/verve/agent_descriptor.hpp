@@ -52,7 +52,12 @@ struct Adaptation {
     // detail a task needs (docs/algorithm.md, "A finer lattice beside a small one"). Saves made
     // without it keep their one lattice.
     static constexpr std::uint32_t FineLattice = 1u << 4;
-    static constexpr std::uint32_t All = Horizon | ActorScale | DecisionRate | HabitBound | FineLattice;
+    // Three or four continuous sensors under Auto grouping (one lattice) get, beside it, a lattice
+    // over each neighbouring pair of sensors, features summed: what two sensors decide is learned
+    // across the others (docs/algorithm.md, "Pairs beside a lattice of three or four sensors").
+    // Saves made without it keep their one lattice.
+    static constexpr std::uint32_t PairsBeside = 1u << 5;
+    static constexpr std::uint32_t All = Horizon | ActorScale | DecisionRate | HabitBound | FineLattice | PairsBeside;
 };
 
 // Bounds on every size an agent derives from its descriptor, so that no descriptor or save can ask

@@ -2,7 +2,7 @@
 #include <cmath>
 #include <string>
 
-#include "core/fine_lattice.hpp"
+#include "core/lattice_layout.hpp"
 #include "core/predictive_model.hpp"
 #include "core/sensor_groups.hpp"
 #include "verve/agent.hpp"

@@ -12,12 +12,14 @@
 // signaled plate with distractors 38.4 -> 48.6). Beside the many small lattices of sensor groups
 // fine ones also helped (a signaled plate with 6 distractors 18.5 -> 11.2 steps) but doubled the
 // features of an update and could hold five times the RBFs: an NPC with a dozen rays pays that on
-// every step, so they are not made.
+// every step, so they are not made. A lattice of 3-4 sensors gets its neighbouring pairs beside
+// it instead (core/pairs_beside.hpp).
 #pragma once
 #include <cstddef>
 #include <cstdint>
 #include <vector>
 
+#include "core/lattice_layout.hpp"
 #include "verve/agent_descriptor.hpp"
 
 namespace verve::core {
@@ -32,17 +34,9 @@ constexpr std::uint32_t kFineLatticeFactor = 2;  // 1.6x put the corridor's RBFs
 // Half: 3.25 waypoints, 3.88 food, and Pendulum-v1 and MountainCar-v0 solved on every seed.
 constexpr float kFineActivationShare = 0.5f;
 
-// One lattice of a representation: which continuous sensors (a bitmask) at what resolution.
-struct LatticeSpec {
-    std::uint64_t sensors = 0;
-    std::uint32_t resolution = 0;
-    bool fine = false;  // a fine lattice beside a coarse one over the same sensors
-};
-
-// Every lattice of an agent's representation, in feature-key order: its sensor groups
-// (core/sensor_groups.hpp) at the descriptor's resolution, then with Adaptation::FineLattice, when
-// they are one lattice over 1 to kFineLatticeSensors sensors, the fine one (unless twice the
-// resolution would pass DescriptorLimits::kMaxResolution).
-std::vector<LatticeSpec> lattices(const AgentDescriptor& d);
+// Appends the fine twin of out's one lattice when d asks for it and that lattice spans 1 to
+// kFineLatticeSensors sensors (unless twice the resolution would pass
+// DescriptorLimits::kMaxResolution). out: the agent's sensor groups (core/lattice_layout.hpp).
+void addFineLattice(const AgentDescriptor& d, std::vector<LatticeSpec>& out);
 
 }  // namespace verve::core

@@ -2,7 +2,7 @@
 
 #include <array>
 
-#include "core/fine_lattice.hpp"
+#include "core/lattice_layout.hpp"
 #include "core/sensor_groups.hpp"
 #include "verve/error.hpp"
 
@@ -29,9 +29,8 @@ StateRepresentation::StateRepresentation(const AgentDescriptor& desc)
         const bool all = sensors.size() == numContinuous_;
         auto circular = circularOf(desc, sensors);
         groups_.push_back(Group{std::move(sensors), all, RbfLattice(desc.discreteSensors, circular, spec.resolution)});
-        // A fine lattice counts kFineActivationShare of its sum in the one the rates are divided by
-        // (core/fine_lattice.hpp).
-        activationSum_ += (spec.fine ? kFineActivationShare : 1.0f) * groups_.back().lattice.activationSum();
+        // A lattice beside the agent's groups counts its share (core/lattice_layout.hpp).
+        activationSum_ += spec.share * groups_.back().lattice.activationSum();
     }
     if (desc.allocation == RbfAllocation::Full) {
         for (auto& g : groups_) g.lattice.allocateFullLattice(featureCount_);

@@ -55,7 +55,8 @@ public:
     void features(std::vector<std::uint64_t>& keys, std::vector<float>& centres) const;
     // A batch's staged prefetch of the next lookup (RbfLattice::prefetchLookup), for one lattice
     // or two (a small one and its fine twin: core/fine_lattice.hpp). Sensor groups' many small
-    // lattices are left to the hardware: their arrays would crowd out the traces.
+    // lattices (and those beside a lattice of 3-4 sensors) are left to the hardware: their arrays
+    // would crowd out the traces.
     static constexpr unsigned kPrefetchStages = RbfLattice::kPrefetchStages;
     static constexpr std::size_t kPrefetchedLattices = 2;
     void prefetchLookup(unsigned stage) const noexcept {
@@ -66,8 +67,8 @@ public:
         if (groups_.size() > kPrefetchedLattices) return;
         for (const Group& group : groups_) group.lattice.addArraysTo(q);
     }
-    // Divides the learning rates: the expected activation sum, summed over the lattices (a fine
-    // one counts kFineActivationShare of its own: core/fine_lattice.hpp).
+    // Divides the learning rates: the expected activation sum, summed over the lattices (one
+    // beside the agent's groups counts its share of its own: core/lattice_layout.hpp).
     float activationSum() const { return activationSum_; }
 
     // Restores a saved feature (a key below keyCount(), a centre of numContinuous values, both

@@ -5,7 +5,7 @@
 #include <string>
 
 #include "core/horizon.hpp"
-#include "core/fine_lattice.hpp"
+#include "core/lattice_layout.hpp"
 #include "core/sensor_groups.hpp"
 #include "verve/error.hpp"
 

@@ -177,6 +177,7 @@ TEST(StateRepresentation, SpatialIndexMatchesBruteForce) {
             AgentDescriptor d;
             d.addContinuousSensor(circular).addContinuousSensor().addContinuousSensor(circular);
             d.resolution = resolution;
+            d.adaptation &= ~verve::Adaptation::PairsBeside;  // one lattice: the brute force knows one
             StateRepresentation rep(d);
             verve::core::Rng rng(resolution);
             std::vector<ActiveFeature> phi;
@@ -221,6 +222,7 @@ TEST(StateRepresentation, SpatialIndexMatchesBruteForceOnFullLattices) {
             for (int k = 0; k < 4; ++k) d.addContinuousSensor(circular && k % 2 == 0);
             d.resolution = resolution;
             d.allocation = verve::RbfAllocation::Full;
+            d.adaptation &= ~verve::Adaptation::PairsBeside;  // one lattice: the brute force knows one
             StateRepresentation rep(d);
             verve::core::Rng rng(resolution);
             expectIndexMatchesBruteForce(rep, 4, {circular, false, circular, false}, 2.0f / static_cast<float>(resolution),
@@ -237,6 +239,7 @@ TEST(StateRepresentation, CellsReadWholeWhenBlockBoxesSkipLittle) {
     AgentDescriptor d;
     for (int k = 0; k < 4; ++k) d.addContinuousSensor();
     d.resolution = 8;
+    d.adaptation &= ~verve::Adaptation::PairsBeside;  // one lattice, as the crowd's one-lattice agents
     StateRepresentation rep(d);
     std::vector<ActiveFeature> phi;
     auto pathPoint = [](int t, float* p) {

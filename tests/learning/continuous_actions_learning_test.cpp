@@ -43,15 +43,17 @@ TEST(ContinuousActionsLearning, TheCarLearnsToReachItsTargetsSteeringAndThrottli
     const Window branches = lateAtDefaults("steering-car-branches", kRuns, kTrials, kFirst);
     print("continuous steering and throttle at defaults", continuous);
     print("3 x 3 branches at defaults", branches);
-    // Measured: 82.8 steps late, 99.8% of targets reached; the branches 96.5 and 100%. Before the
-    // horizon followed the rewards (core/reward_stretch.hpp): 182 and 184, with a 15 s horizon
-    // under which driving slowly earned the same progress.
-    EXPECT_LE(continuous.steps, 95.0);
+    // Measured: 69.8 steps late, the branches 76.2. Before the pairs beside the car's lattice of 3
+    // sensors (core/pairs_beside.hpp): 82.8 (99.8% of targets reached) and 96.5; before the horizon
+    // followed the rewards (core/reward_stretch.hpp): 182 and 184, with a 15 s horizon under which
+    // driving slowly earned the same progress.
+    EXPECT_LE(continuous.steps, 80.0);
     EXPECT_GE(continuous.success, 0.98);
 }
 
-// Known gap (not gating): the learners stay above the scripted driver's 73 steps.
-TEST(KnownGapContinuousActionsLearning, TheCarBeatsTheScriptedDriver) {
+// A known gap until the pairs beside the lattice (core/pairs_beside.hpp): the car stayed above the
+// scripted driver's 73 steps (82.8).
+TEST(ContinuousActionsLearning, TheCarBeatsTheScriptedDriver) {
     const Window continuous = lateAtDefaults("steering-car", kRuns, kTrials, kFirst);
     const double scripted = scriptedSteps();
     std::printf("[ measured ] scripted driver: %.1f steps per trial\n", scripted);

@@ -155,14 +155,16 @@ std::uint32_t demonstratedCarTrial(Agent& agent, verve::tasks::SteeringCar& car,
 }
 
 // Steps per trial of the learning car over 300 trials (the first `shown` driven by the script),
-// averaged over runs 1..runs at the library's defaults, with the defaults table's trial seeds.
-std::vector<double> carCurve(std::uint32_t shown, std::uint64_t runs) {
+// averaged over runs 1..runs at the library's defaults less the `cleared` adaptation bits, with the
+// defaults table's trial seeds.
+std::vector<double> carCurve(std::uint32_t shown, std::uint64_t runs, std::uint32_t cleared = 0) {
     using namespace verve::tasks;
     std::vector<double> steps(300, 0.0);
     for (std::uint64_t run = 1; run <= runs; ++run) {
         SteeringCar car(SteeringCar::Controls::Continuous);
         AgentDescriptor d = atLibraryDefaults(car.agentDescriptor());
         d.seed = run;
+        d.adaptation &= ~cleared;
         Agent agent(d);
         for (std::uint32_t t = 0; t < 300; ++t) {
             const std::uint64_t seed = mixSeed(run, t);
@@ -212,16 +214,25 @@ std::size_t trialsToReach(const std::vector<double>& c, double bar, std::size_t 
 }
 
 // The steering car (docs/experiments.md, "Continuous actions"), shown the scripted driver's
-// continuous steering and throttle for its first trials, beside the car that learns alone.
+// continuous steering and throttle for its first trials, beside the car that learns alone. With
+// one lattice over its 3 sensors (the pairs beside it cleared), as when this was measured, the car
+// alone never reached the script; at defaults it does by trial 87 (alone 72.7 steps on trials
+// 91-120 and 63.5 on 271-300; shown 10 trials 78.0 and 65.2, at the script's from trial 90; shown
+// 30: 65.7 and 65.1, from trial 63): a 77-step driver then has little left to teach, so the bars
+// on what showing adds are kept on the slower learner, and at defaults the shown car must still
+// beat its teacher.
 TEST(ContinuousDemonstrationLearning, TheSteeringCarShownTheScriptedDriverBeatsItSooner) {
     const std::uint64_t runs = 20;
     const double scripted = scriptedCarSteps(runs);
     std::printf("[ measured ] the scripted driver: %.1f steps per trial\n", scripted);
+    const std::vector<double> atDefaults = carCurve(10, runs);
+    std::printf("[ measured ] at defaults, shown 10 trials: steps per trial 271-300 %.1f\n", meanOf(atDefaults, 270, 300));
+    EXPECT_LE(meanOf(atDefaults, 270, 300), scripted);
     double late[3] = {}, early[3] = {};
     std::size_t reach[3] = {};
     const std::uint32_t shown[3] = {0, 10, 30};
     for (int i = 0; i < 3; ++i) {
-        const std::vector<double> c = carCurve(shown[i], runs);
+        const std::vector<double> c = carCurve(shown[i], runs, Adaptation::PairsBeside);
         early[i] = meanOf(c, 90, 120);
         late[i] = meanOf(c, 270, 300);
         reach[i] = trialsToReach(c, scripted, shown[i]);

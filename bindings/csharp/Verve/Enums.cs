@@ -43,8 +43,12 @@ namespace Verve
         /// <summary>One or two continuous sensors get a second RBF lattice at twice the resolution
         /// beside the first: wide RBFs learn the broad shape fast, narrow ones the detail.</summary>
         FineLattice = 16,
+        /// <summary>Three or four continuous sensors under automatic grouping get, beside their
+        /// lattice, one over each neighbouring pair: what two sensors decide is learned across the
+        /// others.</summary>
+        PairsBeside = 32,
         /// <summary>All of them (the default).</summary>
-        All = Horizon | ActorScale | DecisionRate | HabitBound | FineLattice,
+        All = Horizon | ActorScale | DecisionRate | HabitBound | FineLattice | PairsBeside,
     }
 
     /// <summary>Intrinsic reward added during planning (<c>verve_curiosity</c>).</summary>
