@@ -67,7 +67,7 @@ private:
         const char* at;
         const char* end;
     };
-    static constexpr unsigned kRanges = 5;  // two lattices, weights, live list, traces
+    static constexpr unsigned kRanges = 7;  // up to four lattices, weights, live list, traces
     Range ranges_[kRanges];
     unsigned count_ = 0, next_ = 0;
     std::size_t bytes_ = 0;

@@ -58,7 +58,7 @@ public:
     // lattices (and those beside a lattice of 3-4 sensors) are left to the hardware: their arrays
     // would crowd out the traces.
     static constexpr unsigned kPrefetchStages = RbfLattice::kPrefetchStages;
-    static constexpr std::size_t kPrefetchedLattices = 2;
+    static constexpr std::size_t kPrefetchedLattices = 4;
     void prefetchLookup(unsigned stage) const noexcept {
         if (groups_.size() > kPrefetchedLattices) return;
         for (const Group& group : groups_) group.lattice.prefetchLookup(stage);
