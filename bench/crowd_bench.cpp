@@ -1,7 +1,7 @@
 // Many agents per frame through the C ABI (docs/performance.md, scripts/bench_crowd.sh): one
 // verve_batch_update of 100 to 10,000 agents, tiny (2 continuous sensors, resolution 8, 2
 // actions) or cart-pole-shaped (4 continuous, resolution 8, 3 actions, ~676 RBFs each); each shape
-// also with one lattice (the fine lattice or the groups beside cleared; 1,000 and 10,000 agents), as
+// also with one lattice (the fine lattice or the pairs beside cleared; 1,000 and 10,000 agents), as
 // separate agents or as bodies of one shared brain, on 1 or 2 threads; and, as the baseline, the
 // same agents updated one verve_agent_update call after another. 60 Hz x 10,000 agents = 600k/s.
 #include <benchmark/benchmark.h>
@@ -26,7 +26,7 @@ struct Shape {
     const char* name;
     uint32_t sensors, actions, rbfs;  // rbfs: how many the warm agent has before it is copied
     // Adaptation bits cleared: one lattice, to show the cost of the fine one (1-2 sensors) or of
-    // the groups beside a lattice of 3-4 sensors.
+    // the pairs beside a lattice of 3-4 sensors.
     uint64_t cleared = 0;
 };
 const Shape kTiny{"tiny", 2, 2, 0};

@@ -8,7 +8,7 @@ void addFineLattice(const AgentDescriptor& d, std::vector<LatticeSpec>& out) {
     if (d.resolution > DescriptorLimits::kMaxResolution / kFineLatticeFactor) return;
     const int n = __builtin_popcountll(out[0].sensors);
     if (n >= 1 && static_cast<std::size_t>(n) <= kFineLatticeSensors) {
-        out.push_back(LatticeSpec{out[0].sensors, kFineLatticeFactor * d.resolution, true, kFineActivationShare});
+        out.push_back(LatticeSpec{out[0].sensors, kFineLatticeFactor * d.resolution, kFineActivationShare});
     }
 }
 

@@ -12,7 +12,6 @@ namespace verve::core {
 struct LatticeSpec {
     std::uint64_t sensors = 0;
     std::uint32_t resolution = 0;
-    bool fine = false;  // a fine lattice beside a coarse one over the same sensors
     // The share of its expected activation sum in the sum the learning rates are divided by
     // (core/state_representation.hpp): 1 for the agent's own groups, less for a lattice added
     // beside them.

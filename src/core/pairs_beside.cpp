@@ -10,7 +10,7 @@ void addPairsBeside(const AgentDescriptor& d, std::vector<LatticeSpec>& out) {
     const std::size_t n = static_cast<std::size_t>(__builtin_popcountll(out[0].sensors));
     if (n < kPairsBesideMinSensors || n > kJointLatticeSensors) return;
     for (std::size_t i = 0; i + 1 < n; ++i) {
-        out.push_back(LatticeSpec{std::uint64_t(3) << i, d.resolution, false, kPairsBesideActivationShare});
+        out.push_back(LatticeSpec{std::uint64_t(3) << i, d.resolution, kPairsBesideActivationShare});
     }
 }
 

@@ -7,55 +7,43 @@
 #include <vector>
 
 #include "core/sensor_groups.hpp"
+#include "continuous_sensors.hpp"
 #include "core/state_representation.hpp"
 
 using namespace verve;
+using verve::coretest::continuousSensors;
+using verve::coretest::withoutAdaptation;
 using verve::core::ActiveFeature;
 using verve::core::StateRepresentation;
 
-namespace {
-
-AgentDescriptor sensors(std::size_t n) {
-    AgentDescriptor d;
-    for (std::size_t i = 0; i < n; ++i) d.addContinuousSensor();
-    return d;
-}
-
-AgentDescriptor withoutFineLattice(AgentDescriptor d) {
-    d.adaptation &= ~Adaptation::FineLattice;
-    return d;
-}
-
-}  // namespace
-
 TEST(FineLattice, OneOrTwoSensorsGetALatticeAtTwiceTheResolution) {
     for (std::size_t n : {1u, 2u}) {
-        const auto specs = core::lattices(sensors(n));
+        const auto specs = core::lattices(continuousSensors(n));
         ASSERT_EQ(specs.size(), 2u) << n;
         EXPECT_EQ(specs[0].resolution, 10u);
-        EXPECT_FALSE(specs[0].fine);
+        EXPECT_FLOAT_EQ(specs[0].share, 1.0f);
         EXPECT_EQ(specs[1].sensors, specs[0].sensors);
         EXPECT_EQ(specs[1].resolution, 20u);
-        EXPECT_TRUE(specs[1].fine);
+        EXPECT_FLOAT_EQ(specs[1].share, core::kFineActivationShare);
     }
 }
 
 TEST(FineLattice, NoneForMoreSensorsGroupsNoSensorsOrWhenNotAsked) {
     for (std::size_t n : {3u, 4u}) {  // pairs beside their lattice instead (core/pairs_beside.hpp)
-        for (const auto& spec : core::lattices(sensors(n))) EXPECT_FALSE(spec.fine) << n;
+        for (const auto& spec : core::lattices(continuousSensors(n))) EXPECT_EQ(spec.resolution, 10u) << n;
     }
-    EXPECT_EQ(core::lattices(sensors(6)).size(), core::sensorGroups(sensors(6)).size());  // groups: none
+    EXPECT_EQ(core::lattices(continuousSensors(6)).size(), core::sensorGroups(continuousSensors(6)).size());  // groups: none
     AgentDescriptor discrete;
     discrete.addDiscreteSensor(3);
     EXPECT_EQ(core::lattices(discrete).size(), 1u);
     discrete.grouping = SensorGrouping::Custom;  // no continuous sensors, no groups (found by fuzz_calls)
     EXPECT_TRUE(core::lattices(discrete).empty());
-    EXPECT_EQ(core::lattices(withoutFineLattice(sensors(2))).size(), 1u);
-    AgentDescriptor custom = sensors(2);
+    EXPECT_EQ(core::lattices(withoutAdaptation(continuousSensors(2), Adaptation::FineLattice)).size(), 1u);
+    AgentDescriptor custom = continuousSensors(2);
     custom.grouping = SensorGrouping::Custom;
     custom.sensorGroups = {0b01, 0b10};
     EXPECT_EQ(core::lattices(custom).size(), 2u);  // two lattices already: no fine ones
-    AgentDescriptor fine = sensors(1);
+    AgentDescriptor fine = continuousSensors(1);
     fine.resolution = DescriptorLimits::kMaxResolution;  // twice that is past the limit
     EXPECT_EQ(core::lattices(fine).size(), 1u);
     fine.resolution = DescriptorLimits::kMaxResolution / 2;
@@ -63,9 +51,9 @@ TEST(FineLattice, NoneForMoreSensorsGroupsNoSensorsOrWhenNotAsked) {
 }
 
 TEST(FineLattice, AddsAnRbfOfItsOwnAndCountsHalfInTheLearningRates) {
-    AgentDescriptor d = sensors(1);
+    AgentDescriptor d = continuousSensors(1);
     StateRepresentation rep(d);
-    StateRepresentation alone(withoutFineLattice(d));
+    StateRepresentation alone(withoutAdaptation(d, Adaptation::FineLattice));
     EXPECT_FLOAT_EQ(rep.activationSum(), alone.activationSum() * (1.0f + core::kFineActivationShare));
     std::vector<ActiveFeature> phi;
     const float x = 0.3f;

@@ -6,37 +6,24 @@
 
 #include <vector>
 
+#include "continuous_sensors.hpp"
 #include "core/state_representation.hpp"
 
 using namespace verve;
+using verve::coretest::continuousSensors;
+using verve::coretest::withoutAdaptation;
 using verve::core::ActiveFeature;
 using verve::core::StateRepresentation;
-
-namespace {
-
-AgentDescriptor sensors(std::size_t n) {
-    AgentDescriptor d;
-    for (std::size_t i = 0; i < n; ++i) d.addContinuousSensor();
-    return d;
-}
-
-AgentDescriptor withoutPairsBeside(AgentDescriptor d) {
-    d.adaptation &= ~Adaptation::PairsBeside;
-    return d;
-}
-
-}  // namespace
 
 TEST(PairsBeside, ThreeOrFourSensorsGetALatticePerNeighbouringPair) {
     const std::vector<std::uint64_t> three = {0b111, 0b011, 0b110};
     const std::vector<std::uint64_t> four = {0b1111, 0b0011, 0b0110, 0b1100};
     for (const auto& expected : {three, four}) {
-        const auto specs = core::lattices(sensors(expected.size()));
+        const auto specs = core::lattices(continuousSensors(expected.size()));
         ASSERT_EQ(specs.size(), expected.size());
         for (std::size_t i = 0; i < specs.size(); ++i) {
             EXPECT_EQ(specs[i].sensors, expected[i]) << i;
             EXPECT_EQ(specs[i].resolution, 10u);
-            EXPECT_FALSE(specs[i].fine);
             EXPECT_FLOAT_EQ(specs[i].share, i == 0 ? 1.0f : core::kPairsBesideActivationShare);
         }
     }
@@ -44,22 +31,22 @@ TEST(PairsBeside, ThreeOrFourSensorsGetALatticePerNeighbouringPair) {
 
 TEST(PairsBeside, NoneForFewerOrMoreSensorsOtherGroupingsOrWhenNotAsked) {
     for (std::size_t n : {0u, 1u, 2u, 5u, 12u}) {
-        EXPECT_EQ(core::lattices(sensors(n)).size(), core::lattices(withoutPairsBeside(sensors(n))).size()) << n;
+        EXPECT_EQ(core::lattices(continuousSensors(n)).size(), core::lattices(withoutAdaptation(continuousSensors(n), Adaptation::PairsBeside)).size()) << n;
     }
-    EXPECT_EQ(core::lattices(withoutPairsBeside(sensors(4))).size(), 1u);
-    AgentDescriptor joint = sensors(4);
+    EXPECT_EQ(core::lattices(withoutAdaptation(continuousSensors(4), Adaptation::PairsBeside)).size(), 1u);
+    AgentDescriptor joint = continuousSensors(4);
     joint.grouping = SensorGrouping::Joint;
     EXPECT_EQ(core::lattices(joint).size(), 1u);
-    AgentDescriptor custom = sensors(3);
+    AgentDescriptor custom = continuousSensors(3);
     custom.grouping = SensorGrouping::Custom;
     custom.sensorGroups = {0b111};
     EXPECT_EQ(core::lattices(custom).size(), 1u);  // the user's layout, as given
 }
 
 TEST(PairsBeside, EachPairAddsItsOwnRbfsAndCountsItsShareInTheLearningRates) {
-    const AgentDescriptor d = sensors(3);
+    const AgentDescriptor d = continuousSensors(3);
     StateRepresentation rep(d);
-    StateRepresentation alone(withoutPairsBeside(d));
+    StateRepresentation alone(withoutAdaptation(d, Adaptation::PairsBeside));
     AgentDescriptor custom = d;  // the same pairs as Custom groups count whole
     custom.grouping = SensorGrouping::Custom;
     custom.sensorGroups = {0b011, 0b110};

@@ -6,38 +6,31 @@
 
 #include <vector>
 
+#include "continuous_sensors.hpp"
 #include "core/state_representation.hpp"
 #include "validation_error.hpp"
 #include "verve/error.hpp"
 
 using namespace verve;
+using verve::coretest::continuousSensors;
+using verve::coretest::withoutAdaptation;
 using verve::coretest::validationError;
 using verve::core::ActiveFeature;
 using verve::core::StateRepresentation;
 
-namespace {
-
-AgentDescriptor sensors(std::size_t n) {
-    AgentDescriptor d;
-    for (std::size_t i = 0; i < n; ++i) d.addContinuousSensor();
-    return d;
-}
-
-}  // namespace
-
 TEST(SensorGroups, AutoKeepsOneLatticeUpToFourSensorsThenSinglesAndNeighbouringPairs) {
-    EXPECT_EQ(core::sensorGroups(sensors(0)), std::vector<std::uint64_t>{0});
-    EXPECT_EQ(core::sensorGroups(sensors(4)), std::vector<std::uint64_t>{0b1111});
-    EXPECT_EQ(core::sensorGroups(sensors(5)),
+    EXPECT_EQ(core::sensorGroups(continuousSensors(0)), std::vector<std::uint64_t>{0});
+    EXPECT_EQ(core::sensorGroups(continuousSensors(4)), std::vector<std::uint64_t>{0b1111});
+    EXPECT_EQ(core::sensorGroups(continuousSensors(5)),
               (std::vector<std::uint64_t>{0b1, 0b10, 0b100, 0b1000, 0b10000, 0b11, 0b110, 0b1100, 0b11000}));
-    AgentDescriptor joint = sensors(16);
+    AgentDescriptor joint = continuousSensors(16);
     joint.grouping = SensorGrouping::Joint;
     EXPECT_EQ(core::sensorGroups(joint), std::vector<std::uint64_t>{0xFFFF});
-    EXPECT_EQ(core::sensorGroups(sensors(16)).size(), 31u);
+    EXPECT_EQ(core::sensorGroups(continuousSensors(16)).size(), 31u);
 }
 
 TEST(SensorGroups, EachGroupGrowsItsOwnRbfAndTheFeaturesAreSummed) {
-    AgentDescriptor d = sensors(6);
+    AgentDescriptor d = continuousSensors(6);
     d.resolution = 10;
     StateRepresentation rep(d);
     ASSERT_EQ(rep.groupCount(), 11u);
@@ -77,7 +70,7 @@ TEST(SensorGroups, EachGroupGrowsItsOwnRbfAndTheFeaturesAreSummed) {
 }
 
 TEST(SensorGroups, FullAllocationMakesEveryGroupsLattice) {
-    AgentDescriptor d = sensors(3);
+    AgentDescriptor d = continuousSensors(3);
     d.addDiscreteSensor(2);
     d.resolution = 4;
     d.allocation = RbfAllocation::Full;
@@ -89,7 +82,7 @@ TEST(SensorGroups, FullAllocationMakesEveryGroupsLattice) {
 }
 
 TEST(SensorGroups, CustomGroupsAreChecked) {
-    AgentDescriptor d = sensors(3);
+    AgentDescriptor d = continuousSensors(3);
     d.sensorGroups = {0b111};
     EXPECT_NE(validationError(d).find("sensor_groups is only read with Custom sensor_grouping"), std::string::npos);
     d.grouping = SensorGrouping::Custom;
@@ -108,7 +101,7 @@ TEST(SensorGroups, CustomGroupsAreChecked) {
     d.grouping = static_cast<SensorGrouping>(7);
     EXPECT_NE(validationError(d).find("sensor_grouping must be Auto, Joint or Custom"), std::string::npos);
     // A full lattice counts every group's RBFs.
-    AgentDescriptor full = sensors(8);
+    AgentDescriptor full = continuousSensors(8);
     full.resolution = 100;
     full.allocation = RbfAllocation::Full;
     EXPECT_EQ(validationError(full), "");  // 8 x 100 + 7 x 10,000 RBFs
@@ -119,11 +112,11 @@ TEST(SensorGroups, CustomGroupsAreChecked) {
 // An agent may have 64 sensors of each kind (a group is a 64-bit mask); one lattice spans at most
 // 16 (its lookup's inline arrays), and Auto's 2n - 1 lattices fit 64 groups up to 32 sensors.
 TEST(SensorGroups, UpTo64SensorsWithNoLatticeOverMoreThan16) {
-    EXPECT_EQ(validationError(sensors(32)), "");
-    EXPECT_EQ(core::sensorGroups(sensors(32)).size(), 63u);
-    EXPECT_NE(validationError(sensors(33)).find("33 continuous sensors make 65 AUTO sensor_groups"), std::string::npos)
-        << validationError(sensors(33));
-    AgentDescriptor joint = sensors(17);
+    EXPECT_EQ(validationError(continuousSensors(32)), "");
+    EXPECT_EQ(core::sensorGroups(continuousSensors(32)).size(), 63u);
+    EXPECT_NE(validationError(continuousSensors(33)).find("33 continuous sensors make 65 AUTO sensor_groups"), std::string::npos)
+        << validationError(continuousSensors(33));
+    AgentDescriptor joint = continuousSensors(17);
     joint.grouping = SensorGrouping::Joint;
     EXPECT_NE(validationError(joint).find("JOINT sensor_grouping puts all 17 continuous sensors in one lattice, which spans "
                                           "at most 16; use AUTO or CUSTOM sensor_grouping"),
@@ -131,7 +124,7 @@ TEST(SensorGroups, UpTo64SensorsWithNoLatticeOverMoreThan16) {
         << validationError(joint);
     joint.continuousSensors.resize(16);
     EXPECT_EQ(validationError(joint), "");
-    AgentDescriptor custom = sensors(64);
+    AgentDescriptor custom = continuousSensors(64);
     custom.grouping = SensorGrouping::Custom;
     custom.sensorGroups = {0xFFFF, 0xFFFFull << 16, 0xFFFFull << 32, 0xFFFFull << 48};
     EXPECT_EQ(validationError(custom), "");
@@ -144,7 +137,7 @@ TEST(SensorGroups, UpTo64SensorsWithNoLatticeOverMoreThan16) {
     EXPECT_NE(validationError(custom).find("sensor_groups[1] spans 17 continuous sensors, one lattice at most 16; split it"),
               std::string::npos)
         << validationError(custom);
-    custom = sensors(65);
+    custom = continuousSensors(65);
     EXPECT_NE(validationError(custom).find("num_continuous_sensors is 65, at most 64"), std::string::npos);
     AgentDescriptor discrete;
     for (int i = 0; i < 64; ++i) discrete.addDiscreteSensor(i < 40 ? 2 : 1);
