@@ -462,6 +462,20 @@ VERVE_API verve_result VERVE_CALL verve_batch_update_demonstrated(verve_batch* b
     const int32_t* discrete, const uint32_t* discrete_offsets, uint32_t discrete_total,
     const float* continuous, const uint32_t* continuous_offsets, uint32_t continuous_total,
     float dt, const uint32_t* demonstrated, uint32_t* out_actions, verve_result* out_results);
+/* verve_batch_update_demonstrated with the teacher's continuous actions too (as
+ * verve_agent_update_demonstrated_continuous takes them): agent i's num_continuous_actions values in
+ * continuous_actions at continuous_action_offsets[i] when given, else right after agent i-1's
+ * (every agent's count, shown or not, packed back to back); continuous_actions_total is the array's
+ * length. They are read only for agents shown an action, and checked with the rest (a value outside
+ * [-1, 1], NaN or values outside the array refuse the call before anything changes).
+ * continuous_actions NULL: as verve_batch_update_demonstrated (the policy's means are played). */
+VERVE_API verve_result VERVE_CALL verve_batch_update_demonstrated_continuous(verve_batch* batch,
+    verve_agent* const* agents, uint32_t n, const float* rewards,
+    const int32_t* discrete, const uint32_t* discrete_offsets, uint32_t discrete_total,
+    const float* continuous, const uint32_t* continuous_offsets, uint32_t continuous_total,
+    float dt, const uint32_t* demonstrated, const float* continuous_actions,
+    const uint32_t* continuous_action_offsets, uint32_t continuous_actions_total,
+    uint32_t* out_actions, verve_result* out_results);
 
 /* Recordings (docs/teaching.md, "Recordings"): demonstrated steps kept in memory or in a file
  * (checksummed, versioned, bounded like a save) and replayed into an agent to train it before it

@@ -60,6 +60,14 @@ struct BatchStep {
     // Optional: demonstrated[i] is the action the host took for agent i (a demonstrated step,
     // Agent::updateDemonstrated), or kAgentChooses for the agent's own choice.
     const std::uint32_t* demonstrated = nullptr;
+    // Optional, with `demonstrated`: the continuous actions the host played (the overload of
+    // Agent::updateDemonstrated that takes them). Agent i's descriptor().continuousActions values
+    // lie at demonstratedContinuousOffsets[i] when given, otherwise right after agent i-1's (every
+    // agent's count, shown or not, packed back to back); they are read only for an agent shown an
+    // action. Null: a demonstrated step plays the policy's means, as without the values.
+    const float* demonstratedContinuous = nullptr;
+    const std::uint32_t* demonstratedContinuousOffsets = nullptr;
+    std::size_t demonstratedContinuousTotal = 0;
     std::uint32_t* actions = nullptr; // out: agent i's action (the demonstrated one, if any)
     int* results = nullptr;           // optional out: per agent 0 (fine) or the ErrorCode of its failure
 };

@@ -86,11 +86,20 @@ VERVE_API verve_result VERVE_CALL verve_batch_get_worker_count(const verve_batch
 
 namespace {
 
-// verve_batch_update and verve_batch_update_demonstrated (`demonstrated` NULL: every agent chooses).
+// What the host showed the agents of a call: actions NULL, every agent chooses; continuous NULL,
+// a demonstrated step plays the policy's means.
+struct Shown {
+    const uint32_t* actions = nullptr;
+    const float* continuous = nullptr;
+    const uint32_t* continuousOffsets = nullptr;
+    uint32_t continuousTotal = 0;
+};
+
+// verve_batch_update and the calls with demonstrated steps.
 verve_result batchUpdate(const char* function, verve_batch* batch, verve_agent* const* agents, uint32_t n,
                          const float* rewards, const int32_t* discrete, const uint32_t* discrete_offsets,
                          uint32_t discrete_total, const float* continuous, const uint32_t* continuous_offsets,
-                         uint32_t continuous_total, float dt, const uint32_t* demonstrated, uint32_t* out_actions,
+                         uint32_t continuous_total, float dt, const Shown& shown, uint32_t* out_actions,
                          verve_result* out_results) {
     bool verdicts = false;  // out_results holds each agent's verdict from verve::Batch
     const verve_result result = guarded(function, [&] {
@@ -130,7 +139,10 @@ verve_result batchUpdate(const char* function, verve_batch* batch, verve_agent* 
         step.continuousOffsets = continuous_offsets;
         step.continuousTotal = continuous_total;
         step.dt = dt;
-        step.demonstrated = demonstrated;
+        step.demonstrated = shown.actions;
+        step.demonstratedContinuous = shown.continuous;
+        step.demonstratedContinuousOffsets = shown.continuousOffsets;
+        step.demonstratedContinuousTotal = shown.continuousTotal;
         step.actions = out_actions;
         step.results = batch->results.data();
         try {
@@ -167,7 +179,7 @@ VERVE_API verve_result VERVE_CALL verve_batch_update(verve_batch* batch, verve_a
                                                      uint32_t continuous_total, float dt, uint32_t* out_actions,
                                                      verve_result* out_results) {
     return batchUpdate(__func__, batch, agents, n, rewards, discrete, discrete_offsets, discrete_total, continuous,
-                       continuous_offsets, continuous_total, dt, nullptr, out_actions, out_results);
+                       continuous_offsets, continuous_total, dt, Shown{}, out_actions, out_results);
 }
 
 VERVE_API verve_result VERVE_CALL verve_batch_update_demonstrated(
@@ -176,7 +188,18 @@ VERVE_API verve_result VERVE_CALL verve_batch_update_demonstrated(
     const uint32_t* continuous_offsets, uint32_t continuous_total, float dt, const uint32_t* demonstrated,
     uint32_t* out_actions, verve_result* out_results) {
     return batchUpdate(__func__, batch, agents, n, rewards, discrete, discrete_offsets, discrete_total, continuous,
-                       continuous_offsets, continuous_total, dt, demonstrated, out_actions, out_results);
+                       continuous_offsets, continuous_total, dt, Shown{demonstrated}, out_actions, out_results);
+}
+
+VERVE_API verve_result VERVE_CALL verve_batch_update_demonstrated_continuous(
+    verve_batch* batch, verve_agent* const* agents, uint32_t n, const float* rewards, const int32_t* discrete,
+    const uint32_t* discrete_offsets, uint32_t discrete_total, const float* continuous,
+    const uint32_t* continuous_offsets, uint32_t continuous_total, float dt, const uint32_t* demonstrated,
+    const float* continuous_actions, const uint32_t* continuous_action_offsets, uint32_t continuous_actions_total,
+    uint32_t* out_actions, verve_result* out_results) {
+    const Shown shown{demonstrated, continuous_actions, continuous_action_offsets, continuous_actions_total};
+    return batchUpdate(__func__, batch, agents, n, rewards, discrete, discrete_offsets, discrete_total, continuous,
+                       continuous_offsets, continuous_total, dt, shown, out_actions, out_results);
 }
 
 }  // extern "C"

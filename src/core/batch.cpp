@@ -119,6 +119,7 @@ struct Batch::Impl {
     std::vector<std::uint32_t> groupStart;  // per group: first entry in `order`, plus an end
     std::vector<std::uint32_t> order;       // agent indices grouped, each group in array order
     std::vector<ObservationView> views;    // per agent, into the packed arrays
+    std::vector<const float*> shown;        // per agent: its demonstrated continuous action (with them)
     BrainGroups brainGroups;
     FirstFailure failure;
 
@@ -198,7 +199,12 @@ void Batch::Impl::updateOne(std::uint32_t i) noexcept {
     const BatchStep& s = *step;
     try {
         if (s.demonstrated != nullptr && s.demonstrated[i] != kAgentChooses) {
-            s.agents[i]->updateDemonstrated(s.rewards[i], views[i], s.dt, s.demonstrated[i]);
+            if (s.demonstratedContinuous != nullptr) {
+                const ContinuousActionView values{shown[i], s.agents[i]->descriptor().continuousActions};
+                s.agents[i]->updateDemonstrated(s.rewards[i], views[i], s.dt, s.demonstrated[i], values);
+            } else {
+                s.agents[i]->updateDemonstrated(s.rewards[i], views[i], s.dt, s.demonstrated[i]);
+            }
             s.actions[i] = s.demonstrated[i];
         } else {
             s.actions[i] = s.agents[i]->update(s.rewards[i], views[i], s.dt);
@@ -367,6 +373,7 @@ void Batch::update(const BatchStep& s) {
         // memory, the system's thread limit) refuses the call before anything changed.
         b.groupOf.resize(s.count);
         b.views.resize(s.count);
+        if (s.demonstratedContinuous != nullptr) b.shown.resize(s.count);
         b.order.resize(s.count);
         b.groupStart.reserve(s.count + 1);  // the sort below allocates nothing
         b.brainGroups.reset(s.count);
@@ -390,7 +397,7 @@ void Batch::update(const BatchStep& s) {
 
     // Check every agent's input and find its group (its brain) before anything changes.
     b.failure.index = SIZE_MAX;
-    std::size_t packedDiscrete = 0, packedContinuous = 0;
+    std::size_t packedDiscrete = 0, packedContinuous = 0, packedShown = 0;
     // The check reads little of each agent, so its links are asked for further ahead than the
     // update's: an agent's members 16 agents ahead, its brain 8 ahead.
     const auto prefetchCheck = [&s](std::size_t i, unsigned stage) {
@@ -419,8 +426,20 @@ void Batch::update(const BatchStep& s) {
             b.views[i] = ObservationView{nd > 0 ? s.discrete + d : nullptr, nd, nc > 0 ? s.continuous + c : nullptr, nc};
             core::checkObservation(a.desc, b.views[i]);
             core::checkFinite(s.rewards[i], "reward");
+            const std::uint32_t nca = a.desc.continuousActions;
+            const std::size_t sc = s.demonstratedContinuousOffsets != nullptr ? s.demonstratedContinuousOffsets[i] : packedShown;
+            packedShown += nca;
             if (s.demonstrated != nullptr && s.demonstrated[i] != kAgentChooses) {
                 core::checkDemonstratedAction(a.desc, s.demonstrated[i], nullptr);
+                if (s.demonstratedContinuous != nullptr) {
+                    if (nca > 0 && sc + nca > s.demonstratedContinuousTotal) {
+                        refuse("its " + std::to_string(nca) + " demonstrated continuous values at " + std::to_string(sc) +
+                               " lie outside the demonstrated continuous array (" +
+                               std::to_string(s.demonstratedContinuousTotal) + " values)");
+                    }
+                    b.shown[i] = nca > 0 ? s.demonstratedContinuous + sc : nullptr;
+                    core::checkDemonstratedContinuous(a.desc, b.shown[i], nca);
+                }
             }
             b.groupOf[i] = b.brainGroups.of(a.brain.get());
         } catch (const Error& e) {

@@ -1,6 +1,7 @@
 // libFuzzer target: crowds. Fuzzed descriptors make brains and agents of their own; a crowd lists
 // bodies and agents in any order, repeats included, and is stepped by verve_batch_update (or, with
-// demonstrated actions, verve_batch_update_demonstrated) on
+// demonstrated actions, verve_batch_update_demonstrated, or with continuous ones too,
+// verve_batch_update_demonstrated_continuous) on
 // Verve's pool or on a host's job system (ranges run in reverse), with packed or spaced
 // observations, bad values, wrong totals and NULL entries, between bodies made, handles destroyed
 // and brains saved. The same calls run on a twin world built alike, its batch steps done by a batch
@@ -105,6 +106,12 @@ struct Step {
     // agent has), or VERVE_AGENT_CHOOSES.
     bool demonstrates = false;
     std::vector<uint32_t> demonstrated;
+    // ... and now and then through verve_batch_update_demonstrated_continuous: each entry's
+    // continuous actions (its count, mostly in [-1, 1]), packed or at offsets.
+    bool showsContinuous = false;
+    std::vector<float> shownContinuous;
+    std::vector<uint32_t> shownOffsets;
+    uint32_t shownTotal = 0;
 };
 
 // Mostly what a working game passes, so that batches are accepted and compared with the twin's
@@ -132,6 +139,7 @@ Step readStep(FuzzedDataProvider& in, const World& world) {
     const size_t n = in.ConsumeIntegralInRange<size_t>(0, 12);
     const bool spaced = in.ConsumeBool();
     s.demonstrates = in.ConsumeIntegralInRange<int>(0, 3) == 0;
+    s.showsContinuous = s.demonstrates && in.ConsumeBool();
     for (size_t i = 0; i < n && !world.members.empty(); ++i) {
         const bool null = in.ConsumeIntegralInRange<int>(0, 31) == 0;
         const size_t m = null ? kMaxMembers : in.ConsumeIntegralInRange<size_t>(0, world.members.size() - 1);
@@ -148,6 +156,15 @@ Step readStep(FuzzedDataProvider& in, const World& world) {
             s.demonstrated.push_back(kind == 0 ? in.ConsumeIntegral<uint32_t>()
                                      : kind < 6 ? VERVE_AGENT_CHOOSES
                                                 : in.ConsumeIntegralInRange<uint32_t>(0, d.num_actions - 1));
+        }
+        if (s.showsContinuous) {
+            if (spaced) {
+                s.shownContinuous.resize(s.shownContinuous.size() + in.ConsumeIntegralInRange<size_t>(0, 2), 9.0f);
+                s.shownOffsets.push_back(static_cast<uint32_t>(s.shownContinuous.size()));
+            }
+            for (uint64_t k = 0; k < std::min<uint64_t>(d.num_continuous_actions, VERVE_MAX_CONTINUOUS_ACTIONS); ++k) {
+                s.shownContinuous.push_back(mostlyGood(in, -1.0f, 1.0f));
+            }
         }
         if (spaced) {  // a gap before each agent's values, as in a struct of arrays with other fields
             s.discrete.resize(s.discrete.size() + in.ConsumeIntegralInRange<size_t>(0, 2), -7);
@@ -168,6 +185,10 @@ Step readStep(FuzzedDataProvider& in, const World& world) {
             if (!s.continuousOffsets.empty()) s.continuousOffsets.back() = in.ConsumeIntegral<uint32_t>();
             break;
         default: break;
+    }
+    s.shownTotal = static_cast<uint32_t>(s.shownContinuous.size());
+    if (s.showsContinuous && in.ConsumeIntegralInRange<int>(0, 7) == 0) {
+        s.shownTotal = in.ConsumeIntegralInRange<uint32_t>(0, s.shownTotal);  // a short total
     }
     // The arrays hold what the totals claim (-7 past the packed values).
     s.discrete.resize(std::max<size_t>(s.discrete.size(), s.discreteTotal), -7);
@@ -191,7 +212,13 @@ Outcome batchCall(verve_batch* batch, const Step& s, const World& w) {
     o.verdicts.assign(n, VERVE_ERROR_INTERNAL);
     const uint32_t* dOffsets = s.discreteOffsets.empty() ? nullptr : s.discreteOffsets.data();
     const uint32_t* cOffsets = s.continuousOffsets.empty() ? nullptr : s.continuousOffsets.data();
-    o.result = s.demonstrates
+    const uint32_t* shownOffsets = s.shownOffsets.empty() ? nullptr : s.shownOffsets.data();
+    o.result = s.showsContinuous
+                   ? verve_batch_update_demonstrated_continuous(
+                         batch, crowd.data(), n, s.rewards.data(), s.discrete.data(), dOffsets, s.discreteTotal,
+                         s.continuous.data(), cOffsets, s.continuousTotal, s.dt, s.demonstrated.data(),
+                         s.shownContinuous.data(), shownOffsets, s.shownTotal, o.actions.data(), o.verdicts.data())
+               : s.demonstrates
                    ? verve_batch_update_demonstrated(batch, crowd.data(), n, s.rewards.data(), s.discrete.data(), dOffsets,
                                                      s.discreteTotal, s.continuous.data(), cOffsets, s.continuousTotal, s.dt,
                                                      s.demonstrated.data(), o.actions.data(), o.verdicts.data())

@@ -281,7 +281,8 @@ public:
             const verve_agent_desc d = mixedDesc(true, 20 + static_cast<uint64_t>(i));
             r = verve_agent_create(&d, &made);
         } else if (i == 4) {
-            const verve_agent_desc d = mixedDesc(false, 30);
+            verve_agent_desc d = mixedDesc(false, 30);
+            d.num_continuous_actions = 1;  // the bodies are shown continuous actions too
             return verve_brain_create(&d, &brain_);
         } else if (i < 9) {
             r = verve_brain_create_body(brain_, &made);
@@ -311,8 +312,15 @@ public:
             if (k % 3 == 2) {  // every third step, some agents are shown what to do
                 uint32_t demonstrated[kCrowd];
                 for (uint32_t a = 0; a < kCrowd; ++a) demonstrated[a] = a % 2 == 0 ? (k + a) % 3 : VERVE_AGENT_CHOOSES;
-                return verve_batch_update_demonstrated(batch_, agents_.data(), kCrowd, rewards, discrete, nullptr, kCrowd,
-                                                       continuous, nullptr, 2 * kCrowd, 0.1f, demonstrated, actions, results);
+                if (k % 2 == 0) {
+                    return verve_batch_update_demonstrated(batch_, agents_.data(), kCrowd, rewards, discrete, nullptr,
+                                                           kCrowd, continuous, nullptr, 2 * kCrowd, 0.1f, demonstrated,
+                                                           actions, results);
+                }
+                const float shown[4] = {0.5f, -0.25f, 0.75f, -1.0f};  // one per body: the agents have none
+                return verve_batch_update_demonstrated_continuous(batch_, agents_.data(), kCrowd, rewards, discrete,
+                                                                  nullptr, kCrowd, continuous, nullptr, 2 * kCrowd, 0.1f,
+                                                                  demonstrated, shown, nullptr, 4, actions, results);
             }
             return verve_batch_update(batch_, agents_.data(), kCrowd, rewards, discrete, nullptr, kCrowd, continuous,
                                       nullptr, 2 * kCrowd, 0.1f, actions, results);
