@@ -12,7 +12,7 @@ if(NOT EXISTS "${VERVE_LUAJIT_DIR}/lua.h" OR NOT EXISTS "${VERVE_LUAJIT_DIR}/lua
 endif()
 
 set(VERVE_LUA_OUTPUT_DIR ${CMAKE_BINARY_DIR}/lua/jit)
-add_library(verve_lua_jit MODULE src/verve_lua.c src/lua_descriptor.c src/lua_warnings.c src/lua_recording.c src/lua_actions.c
+add_library(verve_lua_jit MODULE src/verve_lua.c src/lua_descriptor.c src/lua_warnings.c src/lua_recording.c src/lua_actions.c src/lua_batch.c
   ${PROJECT_SOURCE_DIR}/bindings/shared/warning_queue.c $<TARGET_OBJECTS:verve_capi_objects>)
 target_include_directories(verve_lua_jit PRIVATE ${VERVE_LUAJIT_DIR} ${PROJECT_SOURCE_DIR}/include
   ${PROJECT_SOURCE_DIR}/bindings/shared)

@@ -6,11 +6,8 @@
 #include <lauxlib.h>
 
 #include "lua_actions.h"
+#include "lua_compat.h"
 #include "lua_shared.h"
-
-#if LUA_VERSION_NUM < 502 /* LuaJIT: the Lua 5.1 API (lua_compat.h has the rest, unused here) */
-#  define lua_rawlen(L, i) lua_objlen((L), (i))
-#endif
 
 void lv_read_action_branches(lua_State* L, verve_agent_desc* d) {
     uint32_t n, b;

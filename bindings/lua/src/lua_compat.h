@@ -9,14 +9,14 @@
 
 #if LUA_VERSION_NUM < 502
 #  define lua_rawlen(L, i) lua_objlen((L), (i))
-static int lua_absindex(lua_State* L, int idx) {
+static inline int lua_absindex(lua_State* L, int idx) {
     return (idx > 0 || idx <= LUA_REGISTRYINDEX) ? idx : lua_gettop(L) + idx + 1;
 }
 #endif
 
 /* The integer at idx, if it is a number with an exact integer value (no strings, no 1.5).
  * LuaJIT numbers are doubles, so it checks the value itself; Lua 5.4 converts 3.0 but not 3.5. */
-static int lv_tointeger(lua_State* L, int idx, lua_Integer* out) {
+static inline int lv_tointeger(lua_State* L, int idx, lua_Integer* out) {
     if (lua_type(L, idx) != LUA_TNUMBER) return 0;
 #if LUA_VERSION_NUM >= 503
     {

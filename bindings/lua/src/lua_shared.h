@@ -11,6 +11,10 @@
 
 #define LV_AGENT_MT "verve.agent"
 
+typedef struct lv_agent {
+    verve_agent* handle; /* NULL once closed */
+} lv_agent;
+
 typedef struct lv_obs {
     int32_t discrete[VERVE_MAX_SENSORS]; /* 0-based, as the C ABI wants them */
     float continuous[VERVE_MAX_SENSORS];

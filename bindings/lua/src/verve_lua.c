@@ -14,6 +14,7 @@
 
 #include "action_choices.h"
 #include "lua_actions.h"
+#include "lua_batch.h"
 #include "lua_compat.h"
 #include "lua_descriptor.h"
 #include "lua_recording.h"
@@ -27,31 +28,14 @@
 #endif
 
 #define LV_BRAIN_MT "verve.brain"
-#define LV_BATCH_MT "verve.batch"
 /* sample_values refuses more points than this instead of allocating without bound. */
 #define LV_MAX_SAMPLES (1u << 24)
 
 static const char* const lv_selection_names[] = {"sample", "greedy", NULL};
 
-typedef struct lv_agent {
-    verve_agent* handle; /* NULL once closed */
-} lv_agent;
-
 typedef struct lv_brain {
     verve_brain* handle; /* NULL once closed */
 } lv_brain;
-
-/* A batch and the packed arrays its update reads and writes, grown as crowds grow. */
-typedef struct lv_batch {
-    verve_batch* handle; /* NULL once closed */
-    uint32_t capacity;   /* agents the arrays hold */
-    verve_agent** agents;
-    float* rewards;
-    int32_t* discrete;   /* VERVE_MAX_SENSORS per agent */
-    float* continuous;   /* VERVE_MAX_SENSORS per agent */
-    uint32_t* actions;
-    uint32_t* demonstrated; /* batch:update's optional demonstrated actions (0-based, VERVE_AGENT_CHOOSES) */
-} lv_batch;
 
 /* ---- errors and conversions ------------------------------------------------------------- */
 
@@ -664,158 +648,6 @@ static int lv_brain_close(lua_State* L) {
     return 0;
 }
 
-/* ---- batches ---------------------------------------------------------------------------- */
-
-static lv_batch* lv_check_batch(lua_State* L) {
-    lv_batch* ud = (lv_batch*)luaL_checkudata(L, 1, LV_BATCH_MT);
-    if (!ud->handle) luaL_error(L, "verve: the batch is closed");
-    return ud;
-}
-
-static void lv_batch_free_arrays(lv_batch* b) {
-    free(b->agents);
-    free(b->rewards);
-    free(b->discrete);
-    free(b->continuous);
-    free(b->actions);
-    free(b->demonstrated);
-    b->demonstrated = NULL;
-    b->agents = NULL;
-    b->rewards = NULL;
-    b->discrete = NULL;
-    b->continuous = NULL;
-    b->actions = NULL;
-    b->capacity = 0;
-}
-
-/* verve.batch{workers = n}: n threads (the caller included); 0 or absent: one per core. */
-static int lv_new_batch(lua_State* L) {
-    static const char* const keys[] = {"workers", NULL};
-    verve_batch_desc d;
-    lv_batch* ud;
-    verve_result r;
-    verve_batch_desc_default(&d);
-    if (!lua_isnoneornil(L, 1)) {
-        luaL_checktype(L, 1, LUA_TTABLE);
-        lv_check_keys(L, 1, keys, "batch", "batch");
-        lua_getfield(L, 1, "workers");
-        if (!lua_isnil(L, -1) && !lv_get_u32(L, -1, &d.worker_count))
-            luaL_error(L, "verve: batch: workers must be a non-negative integer");
-        lua_pop(L, 1);
-    }
-    ud = (lv_batch*)lua_newuserdata(L, sizeof *ud);
-    memset(ud, 0, sizeof *ud);
-    luaL_setmetatable(L, LV_BATCH_MT);
-    r = verve_batch_create(&d, &ud->handle);
-    if (r != VERVE_OK) return lv_fail(L, "batch", r);
-    return 1;
-}
-
-static void lv_batch_reserve(lua_State* L, lv_batch* b, uint32_t n) {
-    if (n <= b->capacity) return;
-    lv_batch_free_arrays(b);
-    b->agents = (verve_agent**)malloc(n * sizeof *b->agents);
-    b->rewards = (float*)malloc(n * sizeof *b->rewards);
-    b->discrete = (int32_t*)malloc((size_t)n * VERVE_MAX_SENSORS * sizeof *b->discrete);
-    b->continuous = (float*)malloc((size_t)n * VERVE_MAX_SENSORS * sizeof *b->continuous);
-    b->actions = (uint32_t*)malloc(n * sizeof *b->actions);
-    b->demonstrated = (uint32_t*)malloc(n * sizeof *b->demonstrated);
-    if (!b->agents || !b->rewards || !b->discrete || !b->continuous || !b->actions || !b->demonstrated) {
-        lv_batch_free_arrays(b);
-        luaL_error(L, "verve: update: out of memory for %d agents", (int)n);
-    }
-    b->capacity = n;
-}
-
-/* batch:update(agents, rewards, observations, dt [, actions [, demonstrated]]): agents[i] gets rewards[i] and
- * observations[i] (as agent:update takes them); returns the actions (written into `actions` when
- * given, so a game loop allocates nothing). `demonstrated[i]`, when given, is the action (from 1) the
- * host took for agents[i] (agent:update_demonstrated), or false for the agent's own choice. Any bad
- * input refuses the whole call. */
-static int lv_batch_update(lua_State* L) {
-    lv_batch* b = lv_check_batch(L);
-    float dt = lv_to_float(luaL_checknumber(L, 5));
-    uint32_t n, i, nd = 0, nc = 0;
-    verve_result r;
-    luaL_checktype(L, 2, LUA_TTABLE);
-    luaL_checktype(L, 3, LUA_TTABLE);
-    luaL_checktype(L, 4, LUA_TTABLE);
-    n = (uint32_t)lua_rawlen(L, 2);
-    if (lua_rawlen(L, 3) != n || lua_rawlen(L, 4) != n)
-        luaL_error(L, "verve: update: %d agents, %d rewards and %d observations: the counts must match", (int)n,
-                   (int)lua_rawlen(L, 3), (int)lua_rawlen(L, 4));
-    lv_batch_reserve(L, b, n);
-    for (i = 0; i < n; ++i) {
-        lv_agent* a;
-        lv_obs o;
-        lua_rawgeti(L, 2, (int)i + 1);
-        a = (lv_agent*)luaL_testudata(L, -1, LV_AGENT_MT);
-        if (!a || !a->handle) luaL_error(L, "verve: update: agents[%d] is not an open agent", (int)i + 1);
-        b->agents[i] = a->handle;
-        lua_pop(L, 1);
-        lua_rawgeti(L, 3, (int)i + 1);
-        if (lua_type(L, -1) != LUA_TNUMBER) luaL_error(L, "verve: update: rewards[%d] must be a number", (int)i + 1);
-        b->rewards[i] = lv_to_float(lua_tonumber(L, -1));
-        lua_pop(L, 1);
-        lua_rawgeti(L, 4, (int)i + 1);
-        /* Raw: a metamethod could close an agent already listed, or the batch and its arrays. */
-        lv_read_obs(L, lua_gettop(L), "update", 1, &o);
-        lua_pop(L, 1);
-        memcpy(b->discrete + nd, o.discrete, o.n_discrete * sizeof *o.discrete);
-        memcpy(b->continuous + nc, o.continuous, o.n_continuous * sizeof *o.continuous);
-        nd += o.n_discrete;
-        nc += o.n_continuous;
-    }
-    if (!lua_isnoneornil(L, 7)) {
-        luaL_checktype(L, 7, LUA_TTABLE);
-        for (i = 0; i < n; ++i) {
-            uint32_t action = 0;
-            lua_rawgeti(L, 7, (int)i + 1);
-            if (lua_isnil(L, -1) || (lua_isboolean(L, -1) && !lua_toboolean(L, -1))) {
-                b->demonstrated[i] = VERVE_AGENT_CHOOSES;
-            } else if (lv_get_u32(L, -1, &action) && action > 0) {
-                b->demonstrated[i] = action - 1;
-            } else {
-                luaL_error(L, "verve: update: demonstrated[%d] must be an action from 1, or false (got %s)", (int)i + 1,
-                           luaL_typename(L, -1));
-            }
-            lua_pop(L, 1);
-        }
-        r = verve_batch_update_demonstrated(b->handle, b->agents, n, b->rewards, b->discrete, NULL, nd, b->continuous,
-                                            NULL, nc, dt, b->demonstrated, b->actions, NULL);
-    } else {
-        r = verve_batch_update(b->handle, b->agents, n, b->rewards, b->discrete, NULL, nd, b->continuous, NULL, nc, dt,
-                               b->actions, NULL);
-    }
-    if (r != VERVE_OK) return lv_fail_indexed(L, "update", r);
-    if (lua_istable(L, 6)) {
-        lua_pushvalue(L, 6);
-    } else {
-        lua_createtable(L, (int)n, 0);
-    }
-    for (i = 0; i < n; ++i) {
-        lua_pushinteger(L, (lua_Integer)b->actions[i] + 1);
-        lua_rawseti(L, -2, (int)i + 1);
-    }
-    return 1;
-}
-
-static int lv_batch_workers(lua_State* L) {
-    uint32_t n = 0;
-    verve_result r = verve_batch_get_worker_count(lv_check_batch(L)->handle, &n);
-    if (r != VERVE_OK) return lv_fail(L, "workers", r);
-    lua_pushinteger(L, (lua_Integer)n);
-    return 1;
-}
-
-static int lv_batch_close(lua_State* L) {
-    lv_batch* ud = (lv_batch*)luaL_checkudata(L, 1, LV_BATCH_MT);
-    verve_batch_destroy(ud->handle);
-    ud->handle = NULL;
-    lv_batch_free_arrays(ud);
-    return 0;
-}
-
 static const luaL_Reg lv_brain_methods[] = {
     {"body", lv_brain_body},
     {"rbf_count", lv_brain_rbf_count},
@@ -830,19 +662,6 @@ static const luaL_Reg lv_brain_methods[] = {
 static const luaL_Reg lv_brain_meta[] = {
     {"__gc", lv_brain_close},
     {"__close", lv_brain_close},
-    {NULL, NULL},
-};
-
-static const luaL_Reg lv_batch_methods[] = {
-    {"update", lv_batch_update},
-    {"workers", lv_batch_workers},
-    {"close", lv_batch_close},
-    {NULL, NULL},
-};
-
-static const luaL_Reg lv_batch_meta[] = {
-    {"__gc", lv_batch_close},
-    {"__close", lv_batch_close},
     {NULL, NULL},
 };
 
@@ -924,7 +743,7 @@ LV_EXPORT int luaopen_verve(lua_State* L) {
     lv_install_warnings();
     lv_register_type(L, LV_AGENT_MT, lv_agent_meta, lv_agent_methods);
     lv_register_type(L, LV_BRAIN_MT, lv_brain_meta, lv_brain_methods);
-    lv_register_type(L, LV_BATCH_MT, lv_batch_meta, lv_batch_methods);
+    lv_register_batches(L);
     lv_register_recordings(L);
     luaL_newlib(L, lv_module);
     return 1;

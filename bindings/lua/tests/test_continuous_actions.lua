@@ -175,6 +175,48 @@ T.check("a brain's bodies and a batch's agents: read each agent's after the upda
   brain:close()
 end)
 
+T.check("a batch shows a crowd its continuous actions: the steps of update_demonstrated_continuous", function()
+  local function crowd()
+    local brain = verve.brain(steerer())
+    return { verve.agent(steerer()), verve.agent(steerer { continuous_actions = 1 }), brain:body(), brain:body() }, brain
+  end
+  local solo, solo_brain = crowd()
+  local batched, batched_brain = crowd()
+  local batch = verve.batch { workers = 2 }
+  local actions = {}
+  for step = 1, 30 do
+    local observations, rewards = {}, {}
+    for i = 1, 4 do observations[i], rewards[i] = obs(step + i), (step + i) % 5 == 0 and 1 or -0.1 end
+    -- agents 1 and 3 are shown their one discrete action and their values, 2 and 4 choose (their
+    -- entries unread)
+    local shown = { 1, false, 1, false }
+    local values = { { 0.5, -0.25 * (step % 4) }, "unread", { -1, 1 } }
+    for i, a in ipairs(solo) do
+      if shown[i] then a:update_demonstrated_continuous(rewards[i], observations[i], 0.1, shown[i], values[i])
+      else a:update(rewards[i], observations[i], 0.1) end
+    end
+    batch:update(batched, rewards, observations, 0.1, actions, shown, values)
+    assert(actions[1] == 1 and actions[3] == 1, ("step %d"):format(step))
+    assert(batched[1]:continuous_action()[2] == values[1][2], "the teacher's values are read back")
+  end
+  assert(batched[1]:save_binary_string() == solo[1]:save_binary_string())
+  assert(batched[2]:save_binary_string() == solo[2]:save_binary_string())
+  assert(batched_brain:save_binary_string() == solo_brain:save_binary_string())
+  local observations, rewards = { obs(1), obs(2), obs(3), obs(4) }, { 0, 0, 0, 0 }
+  T.expect_error("continuous_actions%[1%] has 1 values, agents%[1%] has 2 continuous actions", function()
+    batch:update(batched, rewards, observations, 0.1, nil, { 1, false, false, false }, { { 0.5 } })
+  end)
+  T.expect_error("agents%[3%] is shown an action: continuous_actions%[3%] must list", function()
+    batch:update(batched, rewards, observations, 0.1, nil, { false, false, 1, false }, {})
+  end)
+  local before = batched_brain:save_binary_string()
+  T.expect_library_error("update", function()
+    batch:update(batched, rewards, observations, 0.1, nil, { false, false, 1, 1 }, { nil, nil, { 0, 0 }, { 0, 1.5 } })
+  end)
+  assert(batched_brain:save_binary_string() == before, "a refused call changes nothing")
+  batch:close()
+end)
+
 T.check("refusals: bad counts, planning, a closed agent", function()
   T.expect_error("'continuous_actions' must be a count of values like 2, 0 to 8 %(got 2.5%)",
     verve.agent, steerer { continuous_actions = 2.5 })
