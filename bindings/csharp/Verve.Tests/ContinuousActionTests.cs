@@ -153,6 +153,46 @@ namespace Verve.Tests
             foreach (Agent a in batched.Concat(alone)) a.Dispose();
         }
 
+        [Fact]
+        public void ABatchShowsAgentsTheirContinuousActionsAsSeparateDemonstratedUpdates()
+        {
+            Agent[] batched = { new Agent(Steering(1)), new Agent(Steering(2)) };
+            Agent[] alone = { new Agent(Steering(1)), new Agent(Steering(2)) };
+            using var batch = new Batch(2);
+            var actions = new int[2];
+            Span<float> played = stackalloc float[2];
+            for (int step = 0; step < 60; step++)
+            {
+                float[] sensors = Readings(step).Concat(Readings(step + 50)).ToArray();
+                // Agent 0 is shown values every other step, agent 1 chooses (its two values unread).
+                int[] shown = { step % 2 == 0 ? 0 : Batch.AgentChooses, Batch.AgentChooses };
+                float[] values = { 0.5f, -0.25f * (step % 4), 9f, 9f };
+                var rewards = new[] { Reward(step), Reward(step + 3) };
+                batch.UpdateDemonstratedContinuous(batched, rewards, default, sensors, Dt, shown, values, actions);
+                if (shown[0] == 0)
+                {
+                    alone[0].UpdateDemonstratedContinuous(rewards[0], default, Readings(step), Dt, 0, values.AsSpan(0, 2));
+                    batched[0].GetContinuousAction(played);
+                    Assert.Equal(values.Take(2), played.ToArray());
+                }
+                else
+                {
+                    alone[0].Update(rewards[0], default, Readings(step), Dt);
+                }
+                alone[1].Update(rewards[1], default, Readings(step + 50), Dt);
+            }
+            for (int i = 0; i < 2; i++) Assert.Equal(alone[i].SaveToBytes(), batched[i].SaveToBytes());
+            var before = batched[0].SaveToBytes();
+            float[] sensors0 = Readings(0).Concat(Readings(50)).ToArray();
+            var e = Assert.Throws<VerveException>(() => batch.UpdateDemonstratedContinuous(batched, new[] { 0f, 0f },
+                default, sensors0, Dt, new[] { 0, Batch.AgentChooses }, new[] { 1.5f, 0f, 0f, 0f }, actions));
+            Assert.Contains("agents[0]", e.Message);
+            Assert.Throws<VerveException>(() => batch.UpdateDemonstratedContinuous(batched, new[] { 0f, 0f },
+                default, sensors0, Dt, new[] { 0, Batch.AgentChooses }, default, actions));
+            Assert.Equal(before, batched[0].SaveToBytes());
+            foreach (Agent a in batched.Concat(alone)) a.Dispose();
+        }
+
         // A 1-D reach: x in [-1, 1] moves at 2 * a per second (a the continuous action), the reward is -|x|,
         // trials of 100 steps from a random x, cut off by a time limit. Returns the greedy action at -0.6, +0.6.
         private static (float left, float right) LearnToReach(ulong seed, int trials)

@@ -48,7 +48,7 @@ namespace Verve
         /// agent changed and no action was written.</exception>
         public unsafe void Update(Agent[] agents, ReadOnlySpan<float> rewards, ReadOnlySpan<int> discrete,
             ReadOnlySpan<float> continuous, float dt, Span<int> actions, Span<ResultCode> results = default) =>
-            Step(agents, rewards, discrete, continuous, dt, null, actions, results);
+            Step(agents, rewards, discrete, continuous, dt, null, null, 0, actions, results);
 
         /// <summary>In <see cref="UpdateDemonstrated"/>: the agent chooses its own action.</summary>
         public const int AgentChooses = -1;
@@ -65,11 +65,33 @@ namespace Verve
                 throw new ArgumentException($"{agents.Length} agents need as many demonstrated actions ({demonstrated.Length})");
             // AgentChooses (-1) is VERVE_AGENT_CHOOSES (0xFFFFFFFF) as the library reads it.
             fixed (int* shown = &MemoryMarshal.GetReference(demonstrated))
-                Step(agents!, rewards, discrete, continuous, dt, (uint*)shown, actions, results);
+                Step(agents!, rewards, discrete, continuous, dt, (uint*)shown, null, 0, actions, results);
+        }
+
+        /// <summary>As <see cref="UpdateDemonstrated"/>, with the continuous actions the player or a scripted AI played
+        /// too (as <see cref="Agent.UpdateDemonstratedContinuous"/> takes them): agent i's values (its number of
+        /// continuous actions, each in [-1, 1]) are the next ones in <paramref name="continuousActions"/>, every agent's
+        /// packed one after another whether it is shown an action or not; they are read only for the agents shown one.
+        /// Each agent reads the teacher's values back with <see cref="Agent.GetContinuousAction(Span{float})"/>.</summary>
+        /// <exception cref="VerveException">As <see cref="UpdateDemonstrated"/>, or a value outside [-1, 1], NaN, or
+        /// too few values.</exception>
+        public unsafe void UpdateDemonstratedContinuous(Agent[] agents, ReadOnlySpan<float> rewards,
+            ReadOnlySpan<int> discrete, ReadOnlySpan<float> continuous, float dt, ReadOnlySpan<int> demonstrated,
+            ReadOnlySpan<float> continuousActions, Span<int> actions, Span<ResultCode> results = default)
+        {
+            if (agents != null && demonstrated.Length != agents.Length)
+                throw new ArgumentException($"{agents.Length} agents need as many demonstrated actions ({demonstrated.Length})");
+            // The library reads nothing through a null pointer with a total of 0: an empty span is no values.
+            float none = 0;
+            fixed (int* shown = &MemoryMarshal.GetReference(demonstrated))
+            fixed (float* values = &MemoryMarshal.GetReference(continuousActions))
+                Step(agents!, rewards, discrete, continuous, dt, (uint*)shown, values == null ? &none : values,
+                    (uint)continuousActions.Length, actions, results);
         }
 
         private unsafe void Step(Agent[] agents, ReadOnlySpan<float> rewards, ReadOnlySpan<int> discrete,
-            ReadOnlySpan<float> continuous, float dt, uint* demonstrated, Span<int> actions, Span<ResultCode> results)
+            ReadOnlySpan<float> continuous, float dt, uint* demonstrated, float* shownValues, uint shownTotal,
+            Span<int> actions, Span<ResultCode> results)
         {
             if (agents == null) throw new ArgumentNullException(nameof(agents));
             if (rewards.Length != agents.Length || actions.Length != agents.Length)
@@ -100,9 +122,13 @@ namespace Verve
                     VerveException.ThrowIfFailed(demonstrated == null
                         ? NativeMethods.verve_batch_update(handle, a, (uint)agents.Length, r, d, null, (uint)discrete.Length,
                             c, null, (uint)continuous.Length, dt, (uint*)o, results.Length == 0 ? null : v)
-                        : NativeMethods.verve_batch_update_demonstrated(handle, a, (uint)agents.Length, r, d, null,
+                        : shownValues == null
+                        ? NativeMethods.verve_batch_update_demonstrated(handle, a, (uint)agents.Length, r, d, null,
                             (uint)discrete.Length, c, null, (uint)continuous.Length, dt, demonstrated, (uint*)o,
-                            results.Length == 0 ? null : v));
+                            results.Length == 0 ? null : v)
+                        : NativeMethods.verve_batch_update_demonstrated_continuous(handle, a, (uint)agents.Length, r, d,
+                            null, (uint)discrete.Length, c, null, (uint)continuous.Length, dt, demonstrated, shownValues,
+                            null, shownTotal, (uint*)o, results.Length == 0 ? null : v));
                 }
             }
             finally

@@ -229,5 +229,11 @@ namespace Verve.Native
         internal static extern ResultCode verve_batch_update_demonstrated(BatchHandle batch, IntPtr* agents, uint n,
             float* rewards, int* discrete, uint* discreteOffsets, uint discreteTotal, float* continuous,
             uint* continuousOffsets, uint continuousTotal, float dt, uint* demonstrated, uint* actions, ResultCode* results);
+
+        [DllImport(Library, CallingConvention = CallingConvention.Cdecl)]
+        internal static extern ResultCode verve_batch_update_demonstrated_continuous(BatchHandle batch, IntPtr* agents,
+            uint n, float* rewards, int* discrete, uint* discreteOffsets, uint discreteTotal, float* continuous,
+            uint* continuousOffsets, uint continuousTotal, float dt, uint* demonstrated, float* continuousActions,
+            uint* continuousActionOffsets, uint continuousActionsTotal, uint* actions, ResultCode* results);
     }
 }
