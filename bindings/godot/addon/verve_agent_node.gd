@@ -101,15 +101,20 @@ func act(reward, discrete_values, continuous_values, dt, mask = null):
 
 
 # As act(), but the player or a scripted AI took `demonstrated` (docs/teaching.md): at a decision
-# the agent learns from it and is pulled towards it. Returns false on error.
-func demonstrate(reward, discrete_values, continuous_values, dt, demonstrated):
+# the agent learns from it and is pulled towards it. `continuous_action`, with continuous actions:
+# the values played (one per continuous action, each in [-1, 1]; null plays the policy's means).
+# Returns false on error.
+func demonstrate(reward, discrete_values, continuous_values, dt, demonstrated, continuous_action = null):
 	_reward += reward
 	_clock += dt
 	if not _due():
 		return true
 	if not _has_agent("demonstrate"):
 		return false
-	if not agent.update_demonstrated(_reward, discrete_values, continuous_values, _clock, demonstrated):
+	var shown = agent.update_demonstrated(_reward, discrete_values, continuous_values, _clock, demonstrated) \
+		if continuous_action == null else agent.update_demonstrated_continuous(_reward, discrete_values, \
+			continuous_values, _clock, demonstrated, continuous_action)
+	if not shown:
 		return _fail("demonstrate")
 	_decided(demonstrated, discrete_values, continuous_values)
 	return true

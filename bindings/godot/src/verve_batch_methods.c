@@ -79,12 +79,13 @@ static int vg_arg_pool(vg_call* c, int i, const char* name, godot_variant_type t
 }
 
 /* Fills self->agents from the Array: each element must be one of our VerveAgents holding an agent.
- * Sums the agents' sensors, which the packed arrays must hold exactly. */
+ * Sums the agents' sensors, which the packed arrays must hold exactly, and their continuous
+ * actions (for update's continuous_actions). */
 static int vg_read_agents(vg_call* c, vg_batch* self, const godot_array* list, uint32_t n, uint64_t* discrete,
-                          uint64_t* continuous) {
+                          uint64_t* continuous, uint64_t* continuous_actions) {
     verve_agent_desc d;
     uint32_t i;
-    *discrete = *continuous = 0;
+    *discrete = *continuous = *continuous_actions = 0;
     if (n > self->capacity) {
         /* As many pointers as the Array has elements: bounded by what the caller already holds. */
         verve_agent** grown = realloc(self->agents, (size_t)n * sizeof *grown);
@@ -103,17 +104,20 @@ static int vg_read_agents(vg_call* c, vg_batch* self, const godot_array* list, u
         self->agents[i] = agent->handle;
         *discrete += d.num_discrete_sensors;
         *continuous += d.num_continuous_sensors;
+        *continuous_actions += d.num_continuous_actions;
     }
     return 1;
 }
 
 /* Steps the checked agents: the pool arrays are read in place and the actions written in place.
  * With argument 5 (demonstrated: one action per agent, -1 for the agent's own choice, which is
- * VERVE_AGENT_CHOOSES read as unsigned) the call is verve_batch_update_demonstrated. */
+ * VERVE_AGENT_CHOOSES read as unsigned) the call is verve_batch_update_demonstrated; with argument 6
+ * too (continuous_actions, every agent's packed after the previous one's),
+ * verve_batch_update_demonstrated_continuous. */
 static godot_variant vg_run(vg_call* c, vg_batch* self, uint32_t n, float dt) {
-    godot_pool_real_array rewards, continuous;
+    godot_pool_real_array rewards, continuous, values;
     godot_pool_int_array discrete, actions, shown;
-    godot_pool_real_array_read_access *rewards_read, *continuous_read = NULL;
+    godot_pool_real_array_read_access *rewards_read, *continuous_read = NULL, *values_read = NULL;
     godot_pool_int_array_read_access *discrete_read = NULL, *shown_read = NULL;
     const int32_t* discrete_ptr;
     const float* continuous_ptr;
@@ -141,10 +145,21 @@ static godot_variant vg_run(vg_call* c, vg_batch* self, uint32_t n, float dt) {
         shown = vg_core->godot_variant_as_pool_int_array(c->argv[5]);
         shown_read = vg_core->godot_pool_int_array_read(&shown);
     }
+    if (c->argc > 6) {
+        values = vg_core->godot_variant_as_pool_real_array(c->argv[6]);
+        values_read = vg_core->godot_pool_real_array_read(&values);
+    }
     discrete_ptr = discrete_read ? (const int32_t*)vg_core->godot_pool_int_array_read_access_ptr(discrete_read) : NULL;
     continuous_ptr = continuous_read ? vg_core->godot_pool_real_array_read_access_ptr(continuous_read) : NULL;
     actions_ptr = (uint32_t*)vg_core->godot_pool_int_array_write_access_ptr(actions_write);
-    ok = vg_check(c, shown_read
+    ok = vg_check(c, values_read
+        ? verve_batch_update_demonstrated_continuous(
+              self->handle, self->agents, n, vg_core->godot_pool_real_array_read_access_ptr(rewards_read), discrete_ptr,
+              NULL, n_discrete, continuous_ptr, NULL, n_continuous, dt,
+              (const uint32_t*)vg_core->godot_pool_int_array_read_access_ptr(shown_read),
+              vg_core->godot_pool_real_array_read_access_ptr(values_read), NULL,
+              (uint32_t)vg_core->godot_pool_real_array_size(&values), actions_ptr, NULL)
+        : shown_read
         ? verve_batch_update_demonstrated(self->handle, self->agents, n,
                                           vg_core->godot_pool_real_array_read_access_ptr(rewards_read), discrete_ptr,
                                           NULL, n_discrete, continuous_ptr, NULL, n_continuous, dt,
@@ -153,6 +168,10 @@ static godot_variant vg_run(vg_call* c, vg_batch* self, uint32_t n, float dt) {
         : verve_batch_update(self->handle, self->agents, n, vg_core->godot_pool_real_array_read_access_ptr(rewards_read),
                              discrete_ptr, NULL, n_discrete, continuous_ptr, NULL, n_continuous, dt, actions_ptr, NULL));
     vg_core->godot_pool_int_array_write_access_destroy(actions_write);
+    if (values_read) {
+        vg_core->godot_pool_real_array_read_access_destroy(values_read);
+        vg_core->godot_pool_real_array_destroy(&values);
+    }
     if (shown_read) {
         vg_core->godot_pool_int_array_read_access_destroy(shown_read);
         vg_core->godot_pool_int_array_destroy(&shown);
@@ -178,22 +197,23 @@ VG_METHOD(update) {
     vg_batch* self = user_data;
     verve_batch* batch;
     godot_array list;
-    uint32_t n, n_rewards, n_discrete, n_continuous, n_shown = 0;
-    uint64_t need_discrete, need_continuous;
+    uint32_t n, n_rewards, n_discrete, n_continuous, n_shown = 0, n_values = 0;
+    uint64_t need_discrete, need_continuous, need_values;
     float dt = 0.0f;
     int ok;
     VG_UNUSED;
-    if (!vg_begin_batch(&c, user_data, "update", argc, argv, 5, 6) || !vg_batch_handle(&c, user_data, &batch) ||
+    if (!vg_begin_batch(&c, user_data, "update", argc, argv, 5, 7) || !vg_batch_handle(&c, user_data, &batch) ||
         !vg_arg_type(&c, 0, "agents", GODOT_VARIANT_TYPE_ARRAY) ||
         !vg_arg_pool(&c, 1, "rewards", GODOT_VARIANT_TYPE_POOL_REAL_ARRAY, 0, &n_rewards) ||
         !vg_arg_pool(&c, 2, "discrete", GODOT_VARIANT_TYPE_POOL_INT_ARRAY, 1, &n_discrete) ||
         !vg_arg_pool(&c, 3, "continuous", GODOT_VARIANT_TYPE_POOL_REAL_ARRAY, 1, &n_continuous) ||
         !vg_arg_float(&c, 4, "dt", &dt) ||
-        (argc > 5 && !vg_arg_pool(&c, 5, "demonstrated", GODOT_VARIANT_TYPE_POOL_INT_ARRAY, 0, &n_shown)))
+        (argc > 5 && !vg_arg_pool(&c, 5, "demonstrated", GODOT_VARIANT_TYPE_POOL_INT_ARRAY, 0, &n_shown)) ||
+        (argc > 6 && !vg_arg_pool(&c, 6, "continuous_actions", GODOT_VARIANT_TYPE_POOL_REAL_ARRAY, 0, &n_values)))
         return vg_variant_nil();
     list = vg_core->godot_variant_as_array(argv[0]);
     n = (uint32_t)vg_core->godot_array_size(&list);
-    ok = vg_read_agents(&c, self, &list, n, &need_discrete, &need_continuous);
+    ok = vg_read_agents(&c, self, &list, n, &need_discrete, &need_continuous, &need_values);
     vg_core->godot_array_destroy(&list);
     if (!ok) return vg_variant_nil();
     /* libverve reads one reward per agent and accepts longer sensor arrays: the sizes are ours to check. */
@@ -206,6 +226,9 @@ VG_METHOD(update) {
     else if (n_continuous != need_continuous)
         ok = vg_fail(&c, "continuous has %u values; the agents' continuous sensors take %lu, agent after agent",
                      n_continuous, (unsigned long)need_continuous);
+    else if (argc > 6 && n_values != need_values)
+        ok = vg_fail(&c, "continuous_actions has %u values; the agents' continuous actions take %lu, agent after agent",
+                     n_values, (unsigned long)need_values);
     if (!ok) return vg_variant_nil();
     return vg_run(&c, self, n, dt);
 }

@@ -173,15 +173,17 @@ static const vg_method_info vg_batch_methods[] = {
     {"update", vg_batch_update,
      "One step of every agent, exactly as agents[i].update() in array order: rewards[i], the sensors packed agent "
      "after agent (discrete may be null), dt; optionally demonstrated: per agent the action the host took "
-     "(update_demonstrated), -1 for its own choice. Any bad input changes no agent. -> PoolIntArray of actions "
-     "(null on error)",
-     6,
+     "(update_demonstrated), -1 for its own choice; and continuous_actions: the continuous actions played, every "
+     "agent's packed after the previous one's, read for the agents shown an action only "
+     "(update_demonstrated_continuous). Any bad input changes no agent. -> PoolIntArray of actions (null on error)",
+     7,
      {{"agents", GODOT_VARIANT_TYPE_ARRAY},
       {"rewards", GODOT_VARIANT_TYPE_POOL_REAL_ARRAY},
       {"discrete", GODOT_VARIANT_TYPE_POOL_INT_ARRAY},
       {"continuous", GODOT_VARIANT_TYPE_POOL_REAL_ARRAY},
       {"dt", GODOT_VARIANT_TYPE_REAL},
-      {"demonstrated", GODOT_VARIANT_TYPE_POOL_INT_ARRAY}}},
+      {"demonstrated", GODOT_VARIANT_TYPE_POOL_INT_ARRAY},
+      {"continuous_actions", GODOT_VARIANT_TYPE_POOL_REAL_ARRAY}}},
     {"get_worker_count", vg_batch_get_worker_count, "Threads an update uses, the calling one included. -> int", 0,
      {{0}}},
     {"has_batch", vg_batch_has_batch, "Whether create() succeeded (and close() was not called). -> bool", 0, {{0}}},

@@ -13,6 +13,7 @@ const VerveAgent = preload("res://addons/verve/verve_agent.gdns")
 const VerveBrain = preload("res://addons/verve/verve_brain.gdns")
 const AgentNode = preload("res://addons/verve/verve_agent_node.gd")
 const VerveRecording = preload("res://addons/verve/verve_recording.gdns")
+const VerveBatch = preload("res://addons/verve/verve_batch.gdns")
 
 
 func driver(extra = {}):
@@ -226,6 +227,50 @@ func test_demonstrated_values():
 	check(greedy[0] > 0.5 and greedy[1] < -0.5, "the demonstrations taught the reach: %s" % [greedy])
 
 
+# A crowd shown its values in one VerveBatch.update (continuous_actions packed agent after agent, read
+# for the agents shown an action only) and a node's demonstrate() with values: the same agents as
+# single update_demonstrated_continuous calls.
+func test_demonstrated_values_in_a_batch_and_a_node():
+	var batched = [new_agent(driver({"seed": 1})), new_agent(driver({"seed": 2}))]
+	var alone = [new_agent(driver({"seed": 1})), new_agent(driver({"seed": 2}))]
+	var batch = VerveBatch.new()
+	check(batch.create(2), "VerveBatch.create: " + batch.get_last_error())
+	var node = AgentNode.new()
+	node.actions = 1
+	node.continuous_sensors = 2
+	node.decision_interval = 0.0
+	node.random_seed = 1
+	node.circular_sensors = PoolIntArray([0])
+	node.extra_options = {"continuous_actions": 2}
+	root.add_child(node)
+	var twin = new_agent(driver({"seed": 1}))
+	for step in 40:
+		var values = PoolRealArray([0.5, -0.25 * (step % 4), 9.0, 9.0])  # agent 1's pair unread
+		var sensors = readings(step)
+		sensors.append_array(readings(step + 50))
+		var actions = batch.update(batched, PoolRealArray([0.1, -0.1]), null, sensors, 0.1, PoolIntArray([0, -1]), values)
+		check(actions != null, "VerveBatch.update with continuous_actions: " + batch.get_last_error())
+		var mine = PoolRealArray([values[0], values[1]])
+		alone[0].update_demonstrated_continuous(0.1, [], readings(step), 0.1, 0, mine)
+		alone[1].update(-0.1, [], readings(step + 50), 0.1)
+		check(same(batched[0].get_continuous_action(), mine), "the batch's agent plays the teacher's values back")
+		check(node.demonstrate(0.1, [], readings(step), 0.1, 0, mine), "node.demonstrate with values: " + node.last_error)
+		twin.update_demonstrated_continuous(0.1, [], readings(step), 0.1, 0, mine)
+	for i in 2:
+		check(batched[i].save_bytes() == alone[i].save_bytes(), "a batch's agent %d is its single calls' twin" % i)
+	check(node.agent.save_bytes() == twin.save_bytes(), "node.demonstrate(..., values) is update_demonstrated_continuous")
+	var before = batched[0].save_bytes()
+	var sensors = readings(0)
+	sensors.append_array(readings(50))
+	check_error(batch, batch.update(batched, PoolRealArray([0.0, 0.0]), null, sensors, 0.1, PoolIntArray([0, -1]),
+		PoolRealArray([0.5, 0.5])), null, "continuous_actions has 2 values; the agents' continuous actions take 4",
+		"VerveBatch.update with too few continuous_actions")
+	check_error(batch, batch.update(batched, PoolRealArray([0.0, 0.0]), null, sensors, 0.1, PoolIntArray([0, -1]),
+		PoolRealArray([1.5, 0.0, 0.0, 0.0])), null, "within [-1, 1]", "VerveBatch.update with a value out of range")
+	check(batched[0].save_bytes() == before, "refused batch calls change nothing")
+	node.queue_free()
+
+
 func _init():
 	test_options()
 	test_values()
@@ -234,5 +279,6 @@ func _init():
 	test_doc_driver()
 	test_refusals()
 	test_demonstrated_values()
+	test_demonstrated_values_in_a_batch_and_a_node()
 	report("verve godot continuous actions")
 	quit()

@@ -366,7 +366,7 @@ func test_batch_errors():
 	check_error(batch, batch.update(agents[0], rewards, discrete, continuous, DT), null, "agents must be an Array",
 		"one agent instead of an Array")
 	check_error(batch, batch.update(agents, rewards, discrete, continuous, "fast"), null, "dt must be a number", "a String dt")
-	check_error(batch, batch.update(agents, rewards, discrete, continuous), null, "takes 5 to 6 arguments (got 4)", "4 arguments")
+	check_error(batch, batch.update(agents, rewards, discrete, continuous), null, "takes 5 to 7 arguments (got 4)", "4 arguments")
 	# An absurd crowd: refused at its first element, nothing allocated beyond the Array itself.
 	var huge = []
 	huge.resize(200000)
