@@ -218,7 +218,7 @@ export class Batch {
   readonly disposed: boolean;
   /** One step of every agent, as the same updates in array order; returns the actions. */
   update(agents: Agent[], rewards: Numbers, observations: Array<Observation | null | undefined>, dt: number, out?: Uint32Array,
-    demonstrated?: Array<number | null>): Uint32Array;
+    demonstrated?: Array<number | null>, continuousActions?: Array<Numbers | null>): Uint32Array;
   dispose(): void;
 }
 

@@ -4,7 +4,7 @@
 import { invalidArgument, invalidState } from './errors.js';
 import { Agent } from './agent.js';
 import { L } from './descriptor.js';
-import { checkNumber, checkObservation } from './observation.js';
+import { checkContinuousValues, checkNumber, checkObservation } from './observation.js';
 
 /** The most agents one batch.update takes. */
 export const MAX_BATCH_AGENTS = 2 ** 20;
@@ -34,9 +34,11 @@ export class Batch {
    * One step of every agent: agents[i] earns rewards[i] and sees observations[i]. Returns the
    * actions (into `out`, a Uint32Array, when given). `demonstrated`, when given, holds per agent the
    * action the player or a scripted AI took (as Agent.updateDemonstrated takes it), or null for the
-   * agent's own choice (docs/teaching.md). On any bad input nothing changes.
+   * agent's own choice (docs/teaching.md); `continuousActions`, when given too, per agent shown an
+   * action the continuous actions played (as Agent.updateDemonstratedContinuous takes them; unread,
+   * may be null, for the agents that choose). On any bad input nothing changes.
    */
-  update(agents, rewards, observations, dt, out, demonstrated) {
+  update(agents, rewards, observations, dt, out, demonstrated, continuousActions) {
     if (this.handle === 0) throw invalidState('the batch is disposed');
     if (!Array.isArray(agents)) throw invalidArgument('batch.update: agents must be an array of agents');
     const n = agents.length;
@@ -54,6 +56,11 @@ export class Batch {
     if (demonstrated !== undefined && (!Array.isArray(demonstrated) || demonstrated.length !== n)) {
       throw invalidArgument(`batch.update: demonstrated must be an array of ${n} actions or nulls`);
     }
+    if (continuousActions !== undefined && (demonstrated === undefined || !Array.isArray(continuousActions) ||
+        continuousActions.length !== n)) {
+      throw invalidArgument(`batch.update: continuousActions must come after demonstrated, an array of ${n} arrays of values or nulls`);
+    }
+    let nv = 0;
     let nd = 0;
     let nc = 0;
     const checked = new Array(n);
@@ -67,14 +74,22 @@ export class Batch {
       if (shown !== null && (!Number.isInteger(shown) || shown < 0 || shown >= agent.numActions)) {
         throw invalidArgument(`batch.update: demonstrated[${i}] must be an action in 0..${agent.numActions - 1} or null`);
       }
+      if (continuousActions !== undefined && shown !== null) {
+        const values = checkContinuousValues(`continuousActions[${i}]`, continuousActions[i]);
+        if (values.length !== agent.numContinuousActions) {
+          throw invalidArgument(`batch.update: continuousActions[${i}] has ${values.length} values, agents[${i}] has ${agent.numContinuousActions} continuous actions`);
+        }
+      }
+      nv += agent.numContinuousActions;
       nd += checked[i].discrete.length;
       nc += checked[i].continuous.length;
     }
     const rt = this.rt;
-    const [a, r, d, c, actions, results, shown] = rt.carve([4 * n, 4 * n, 4 * nd, 4 * nc, 4 * n, 4 * n, 4 * n]);
+    const [a, r, d, c, actions, results, shown, v] = rt.carve([4 * n, 4 * n, 4 * nd, 4 * nc, 4 * n, 4 * n, 4 * n, 4 * nv]);
     const { u32, i32, f32 } = rt.heap;
     let di = d >> 2;
     let ci = c >> 2;
+    let vi = v >> 2;
     for (let i = 0; i < n; ++i) {
       u32[(a >> 2) + i] = agents[i].handle;
       if (demonstrated !== undefined) u32[(shown >> 2) + i] = demonstrated[i] === null ? 0xffffffff : demonstrated[i];
@@ -83,10 +98,17 @@ export class Batch {
       f32.set(checked[i].continuous, ci);
       di += checked[i].discrete.length;
       ci += checked[i].continuous.length;
+      if (continuousActions !== undefined) {  // every agent's count, packed; unread where it chooses
+        if (demonstrated[i] !== null) f32.set(continuousActions[i], vi);
+        vi += agents[i].numContinuousActions;
+      }
     }
     rt.check(demonstrated === undefined
       ? rt.m._verve_batch_update(this.handle, a, n, r, d, 0, nd, c, 0, nc, dt, actions, results)
-      : rt.m._verve_batch_update_demonstrated(this.handle, a, n, r, d, 0, nd, c, 0, nc, dt, shown, actions, results));
+      : continuousActions === undefined
+      ? rt.m._verve_batch_update_demonstrated(this.handle, a, n, r, d, 0, nd, c, 0, nc, dt, shown, actions, results)
+      : rt.m._verve_batch_update_demonstrated_continuous(this.handle, a, n, r, d, 0, nd, c, 0, nc, dt, shown,
+        nv ? v : 0, 0, nv, actions, results));
     const view = rt.heap.u32.subarray(actions >> 2, (actions >> 2) + n);
     if (out) {
       out.set(view);

@@ -111,6 +111,32 @@ test("a brain's bodies and a batch: each agent's values after a batch update", (
   for (const x of [...bodies, loadedBody, batch, brain, binary]) x.dispose();
 });
 
+test('a batch shows agents their continuous actions: the steps of updateDemonstratedContinuous', () => {
+  const batched = [verve.createAgent(driver({ seed: 1 })), verve.createAgent(driver({ seed: 2 }))];
+  const alone = [verve.createAgent(driver({ seed: 1 })), verve.createAgent(driver({ seed: 2 }))];
+  const batch = verve.createBatch();
+  for (let step = 0; step < 40; ++step) {
+    const values = [0.5, -0.25 * (step % 4)];
+    const shown = step % 2 === 0 ? 0 : null;  // agent 0 shown every other step, agent 1 chooses
+    batch.update(batched, [0.1, -0.1], [obs(step), obs(step + 50)], 0.1, undefined, [shown, null], [values, null]);
+    if (shown === null) alone[0].update(0.1, obs(step), 0.1);
+    else {
+      alone[0].updateDemonstratedContinuous(0.1, obs(step), 0.1, 0, values);
+      assert.deepEqual(Array.from(batched[0].continuousAction()), values);
+    }
+    alone[1].update(-0.1, obs(step + 50), 0.1);
+  }
+  for (let i = 0; i < 2; ++i) assert.deepEqual(batched[i].saveBytes(), alone[i].saveBytes());
+  const before = batched[0].saveBytes();
+  const inputs = [batched, [0, 0], [obs(0), obs(1)], 0.1, undefined, [0, null]];
+  assert.throws(() => batch.update(...inputs, [[0.5], null]), /continuousActions\[0\] has 1 values, agents\[0\] has 2/);
+  assert.throws(() => batch.update(...inputs, [[1.5, 0], null]), /within \[-1, 1\]/);
+  assert.throws(() => batch.update(batched, [0, 0], [obs(0), obs(1)], 0.1, undefined, undefined, [null, null]),
+    /continuousActions must come after demonstrated/);
+  assert.deepEqual(batched[0].saveBytes(), before);
+  for (const x of [...batched, ...alone, batch]) x.dispose();
+});
+
 test("docs/web.md's driver, as written there", () => {
   const reward = 0, dt = 0.1, readings = [0.3, -0.8];  // bearing to the target (wraps), distance
   const maxSteer = 0.6, maxForce = 40;
