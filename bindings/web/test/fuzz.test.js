@@ -55,6 +55,10 @@ test(`fuzz: ${ITERATIONS} random calls (seed ${SEED})`, () => {
     (a) => a.descriptor(),
     (a) => verve.loadAgent(a.saveBinaryBytes()).dispose(),
     (a) => batch.update(pick([agents, agents.slice(0, 2), [a, a], [a, anything()]]), pick([[0, 0, 0, 0], [0, 0], list(numbers)]), pick([agents.map(observation), [observation(), observation()], anything()]), pick([0.1, NaN])),
+    // Demonstrated steps in a batch, with the continuous actions played (agents[4] has 2).
+    (a) => batch.update([a, pick(agents)], [numbers(), 0], [observation(), observation()], 0.1, undefined,
+      pick([[0, null], [null, 0], [0, 0], [ints(), null], anything()]),
+      pick([undefined, [[next() * 2 - 1, next() * 2 - 1], [next() * 2 - 1, next() * 2 - 1]], [list(numbers), null], [[], []], anything()])),
   ];
 
   let refusals = 0;
