@@ -27,11 +27,18 @@ TEST(ActionBranchesLearning, BranchesLearnTheirPartsFromOneTdErrorFasterThanTheC
     EXPECT_LT(branches.steps, combined.steps);
 }
 
-// Known gap (not gating; docs/experiments.md): branches 25% faster than the combined set, as they
-// were before the fine lattice (5.32 vs 9.08). The fine lattice helped the 18 combined moves more
-// (9.08 -> 7.34) than it cost the branches (5.32 -> 5.54): 0.755 of the combined set's steps.
-TEST(KnownGapActionBranchesLearning, BranchesTakeAQuarterFewerStepsThanTheCombinedSet) {
-    const Window branches = lateAtDefaults("signaled-hot-plate-2d-branches", kRuns, kTrials, kFirst);
-    const Window combined = lateAtDefaults("signaled-hot-plate-2d-18-moves", kRuns, kTrials, kFirst);
+// Branches 25% faster than the combined set, measured on 80 runs. On 20 the ratio is too noisy to
+// hold a bar at 0.75: over 24 independent sets of 20 runs (base seeds 1-24) it is 0.716 +- 0.020 at
+// defaults, and the set of base seed 1 above is one of the two of 24 above 0.75 (5.54 / 7.34 =
+// 0.755). The first 80 runs of base seed 1 (the 20 above and 60 more): 5.555 / 7.557 = 0.735. The
+// fine lattice (core/fine_lattice.hpp) helped the 18 combined moves more (8.43 -> 7.61 over the 24
+// sets) than the branches (5.61 -> 5.44): its features raise every learning rate, which the 18
+// moves, each neuron trained on about 1/18 of steps, are shorter of.
+TEST(ActionBranchesLearning, BranchesTakeAQuarterFewerStepsThanTheCombinedSetOver80Runs) {
+    constexpr std::uint32_t kManyRuns = 80;
+    const Window branches = lateAtDefaults("signaled-hot-plate-2d-branches", kManyRuns, kTrials, kFirst);
+    const Window combined = lateAtDefaults("signaled-hot-plate-2d-18-moves", kManyRuns, kTrials, kFirst);
+    print("branches (3 x 3 x 2) at defaults, 80 runs", branches);
+    print("18 combined moves at defaults, 80 runs", combined);
     EXPECT_LT(branches.steps, 0.75 * combined.steps);
 }
