@@ -8,9 +8,13 @@
 #include <string>
 #include <vector>
 
+#include "crowd_support.hpp"
 #include "verve_c.h"
 
 namespace {
+
+using verve_crowd_test::makeBatch;
+using verve_crowd_test::saved;
 
 // One continuous sensor, 3 discrete actions and `continuousActions` values in [-1, 1] beside them.
 verve_agent_desc steering(uint32_t continuousActions, uint64_t seed) {
@@ -21,31 +25,6 @@ verve_agent_desc steering(uint32_t continuousActions, uint64_t seed) {
     d.num_continuous_actions = continuousActions;
     d.seed = seed;
     return d;
-}
-
-std::string saved(const verve_agent* agent) {
-    size_t size = 0;
-    EXPECT_EQ(verve_agent_save_memory(agent, nullptr, &size), VERVE_OK);
-    std::string xml(size, '\0');
-    EXPECT_EQ(verve_agent_save_memory(agent, &xml[0], &size), VERVE_OK);
-    return xml;
-}
-
-std::string savedBrain(const verve_brain* brain) {
-    size_t size = 0;
-    EXPECT_EQ(verve_brain_save_memory(brain, nullptr, &size), VERVE_OK);
-    std::string xml(size, '\0');
-    EXPECT_EQ(verve_brain_save_memory(brain, &xml[0], &size), VERVE_OK);
-    return xml;
-}
-
-verve_batch* makeBatch(uint32_t workers) {
-    verve_batch_desc bd;
-    verve_batch_desc_default(&bd);
-    bd.worker_count = workers;
-    verve_batch* batch = nullptr;
-    EXPECT_EQ(verve_batch_create(&bd, &batch), VERVE_OK);
-    return batch;
 }
 
 // Four agents: two separate (2 and 1 continuous actions) and two bodies of one brain (2 each).
@@ -67,7 +46,7 @@ struct Crowd {
         verve_brain_destroy(brain);
     }
     std::string state() const {
-        return saved(agents[0]) + saved(agents[1]) + savedBrain(brain);
+        return saved(agents[0]) + saved(agents[1]) + saved(brain);
     }
 };
 

@@ -14,9 +14,13 @@
 #include <thread>
 #include <vector>
 
+#include "crowd_support.hpp"
 #include "verve_c.h"
 
 namespace {
+
+using verve_crowd_test::makeBatch;
+using verve_crowd_test::saved;
 
 verve_agent_desc shape(uint32_t discreteValues, uint32_t continuous, uint32_t resolution, uint32_t actions,
                        uint64_t seed, bool planning = false) {
@@ -31,14 +35,6 @@ verve_agent_desc shape(uint32_t discreteValues, uint32_t continuous, uint32_t re
     d.seed = seed;
     d.planning = planning ? 1 : 0;
     return d;
-}
-
-std::string saved(const verve_agent* agent) {
-    size_t size = 0;
-    EXPECT_EQ(verve_agent_save_memory(agent, nullptr, &size), VERVE_OK);
-    std::string xml(size, '\0');
-    EXPECT_EQ(verve_agent_save_memory(agent, &xml[0], &size), VERVE_OK);
-    return xml;
 }
 
 // A crowd of mixed shapes, 8 times over: separate agents, the bodies of two brains interleaved
@@ -173,15 +169,6 @@ Updater batched(verve_batch* batch) {
             << verve_last_error();
         for (auto r : results) ASSERT_EQ(r, VERVE_OK);
     };
-}
-
-verve_batch* makeBatch(uint32_t workers) {
-    verve_batch_desc d;
-    EXPECT_EQ(verve_batch_desc_default(&d), VERVE_OK);
-    d.worker_count = workers;
-    verve_batch* b = nullptr;
-    EXPECT_EQ(verve_batch_create(&d, &b), VERVE_OK) << verve_last_error();
-    return b;
 }
 
 // Separate agents: the results of single calls in array order. Bodies of a brain: those of the
