@@ -427,11 +427,12 @@ void Batch::update(const BatchStep& s) {
             core::checkObservation(a.desc, b.views[i]);
             core::checkFinite(s.rewards[i], "reward");
             const std::uint32_t nca = a.desc.continuousActions;
-            const std::size_t sc = s.demonstratedContinuousOffsets != nullptr ? s.demonstratedContinuousOffsets[i] : packedShown;
+            const std::size_t at = packedShown;
             packedShown += nca;
             if (s.demonstrated != nullptr && s.demonstrated[i] != kAgentChooses) {
                 core::checkDemonstratedAction(a.desc, s.demonstrated[i], nullptr);
                 if (s.demonstratedContinuous != nullptr) {
+                    const std::size_t sc = s.demonstratedContinuousOffsets != nullptr ? s.demonstratedContinuousOffsets[i] : at;
                     if (nca > 0 && sc + nca > s.demonstratedContinuousTotal) {
                         refuse("its " + std::to_string(nca) + " demonstrated continuous values at " + std::to_string(sc) +
                                " lie outside the demonstrated continuous array (" +
