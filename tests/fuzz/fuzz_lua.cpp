@@ -130,7 +130,8 @@ struct Driver {
 
     // batch:update's arguments as a game passes them (so that some calls get past the checks): the
     // latest agent (or body) listed up to 4 times, rewards, observations of its two continuous
-    // sensors (any element may be anything, a trap included), a dt and sometimes an actions table.
+    // sensors (any element may be anything, a trap included), a dt and sometimes an actions table,
+    // demonstrated actions and the continuous actions played.
     int pushCrowd() {
         const int n = in.ConsumeIntegralInRange<int>(0, 4);
         for (int list = 0; list < 3; ++list) {
@@ -160,7 +161,35 @@ struct Driver {
         lua_pushnumber(L, in.ConsumeFloatingPointInRange<double>(0.001, 0.2));
         if (!in.ConsumeBool()) return 4;
         lua_newtable(L);
-        return 5;
+        if (in.ConsumeBool()) return 5;
+        // Demonstrated actions (from 1, or false), then sometimes the continuous actions played:
+        // per agent a list of 0-2 values (the first agent has none), or anything, a trap included.
+        lua_createtable(L, n, 0);
+        for (int i = 1; i <= n; ++i) {
+            if (in.ConsumeIntegralInRange<int>(0, 15) == 0) pushValue(1);
+            else if (in.ConsumeBool()) lua_pushboolean(L, 0);
+            else lua_pushinteger(L, in.ConsumeIntegralInRange<int>(1, 3));
+            lua_rawseti(L, -2, i);
+        }
+        if (in.ConsumeBool()) return 6;
+        lua_createtable(L, n, 0);
+        for (int i = 1; i <= n; ++i) {
+            const int kind = in.ConsumeIntegralInRange<int>(0, 15);
+            if (kind == 0) {
+                pushValue(1);
+            } else if (kind == 1) {
+                pushTrap();
+            } else {
+                const int values = kind < 12 ? 0 : in.ConsumeIntegralInRange<int>(1, 2);
+                lua_createtable(L, values, 0);
+                for (int c = 1; c <= values; ++c) {
+                    lua_pushnumber(L, in.ConsumeFloatingPointInRange<double>(-1.5, 1.5));
+                    lua_rawseti(L, -2, c);
+                }
+            }
+            lua_rawseti(L, -2, i);
+        }
+        return 7;
     }
 
     // Calls fn (on the stack top) with fuzzed arguments, protected, as a method of `self` (a kind)
