@@ -421,6 +421,27 @@ static class MonoHost
             brain.Dispose();
         });
 
+        // A batch where one agent is shown its continuous action too: it plays the teacher's values back.
+        Check("Batch.UpdateDemonstratedContinuous(Agent[], ReadOnlySpan<Single>, ReadOnlySpan<Int32>, ReadOnlySpan<Single>, " +
+              "Single, ReadOnlySpan<Int32>, ReadOnlySpan<Single>, Span<Int32>, Span<ResultCode>)", () =>
+        {
+            var options = new AgentOptions { Actions = 0, ContinuousActions = 1, Seed = 3 }.AddContinuousSensor();
+            Agent[] agents = { new Agent(options), new Agent(options) };
+            var batch = new Batch(2);
+            var actions = new int[2];
+            for (int i = 0; i < 10; ++i)
+            {
+                float shown = 0.1f * i - 0.5f;
+                batch.UpdateDemonstratedContinuous(agents, new[] { 0f, 0f }, ReadOnlySpan<int>.Empty,
+                    new[] { 0.1f * i, -0.1f * i }, 0.1f, new[] { 0, Batch.AgentChooses }, new[] { shown, 9f }, actions);
+                Require(agents[0].ContinuousAction[0] == shown, "the shown value played back: " + agents[0].ContinuousAction[0]);
+            }
+            Expect<VerveException>(() => batch.UpdateDemonstratedContinuous(agents, new[] { 0f, 0f }, ReadOnlySpan<int>.Empty,
+                new[] { 0f, 0f }, 0.1f, new[] { 0, Batch.AgentChooses }, new[] { 1.5f, 0f }, actions));
+            batch.Dispose();
+            foreach (var a in agents) a.Dispose();
+        });
+
         // One brain, two bodies, a batch over both on 2 threads: the same actions as a batch of 1 thread over a
         // twin brain (a brain's bodies act in the batch's phases, docs/crowds.md).
         Check("Brain..ctor(AgentOptions); Brain.CreateBody(); Brain.get_RbfCount(); Batch..ctor(Int32); Batch.get_WorkerCount(); " +
