@@ -53,10 +53,10 @@ public:
     // Every feature's saved key and centre (numContinuous values; 0 for sensors outside its
     // group), by feature index. Not for the hot path.
     void features(std::vector<std::uint64_t>& keys, std::vector<float>& centres) const;
-    // A batch's staged prefetch of the next lookup (RbfLattice::prefetchLookup), for one lattice
-    // or two (a small one and its fine twin: core/fine_lattice.hpp). Sensor groups' many small
-    // lattices (and those beside a lattice of 3-4 sensors) are left to the hardware: their arrays
-    // would crowd out the traces.
+    // A batch's staged prefetch of the next lookup (RbfLattice::prefetchLookup), for up to four
+    // lattices (one, a small one and its fine twin, or a lattice of 3-4 sensors and the pairs
+    // beside it: core/lattice_layout.hpp). Sensor groups' many small lattices are left to the
+    // hardware: their arrays would crowd out the traces.
     static constexpr unsigned kPrefetchStages = RbfLattice::kPrefetchStages;
     static constexpr std::size_t kPrefetchedLattices = 4;
     void prefetchLookup(unsigned stage) const noexcept {
