@@ -200,7 +200,10 @@ typedef struct verve_agent_desc {
 #define VERVE_ADAPT_PAIRS_BESIDE 32u /* three or four continuous sensors under VERVE_GROUPING_AUTO get,
                                         beside their lattice, one over each neighbouring pair (saves
                                         made without it keep their one lattice) */
-#define VERVE_ADAPT_ALL 63u
+#define VERVE_ADAPT_GROUP_RATES 64u /* two or more sensor groups learn at rates of their own, learned
+                                         from the TD errors: those that predict them take more of each
+                                         step (saves made without it keep one rate for all) */
+#define VERVE_ADAPT_ALL 127u
 
 /* The sizes of verve_agent_desc a library accepts in struct_size: each release's full struct.
  * V1 ended after `seed` (no planning fields); V2 after discrete_prediction; V3 after

@@ -57,7 +57,12 @@ struct Adaptation {
     // across the others (docs/algorithm.md, "Pairs beside a lattice of three or four sensors").
     // Saves made without it keep their one lattice.
     static constexpr std::uint32_t PairsBeside = 1u << 5;
-    static constexpr std::uint32_t All = Horizon | ActorScale | DecisionRate | HabitBound | FineLattice | PairsBeside;
+    // With two or more sensor groups, each group's lattice learns at a rate of its own, learned from
+    // the TD errors: the groups that predict them take more of each step, the others less
+    // (docs/algorithm.md, "Which sensors matter"; core/group_rates.hpp). Saves made without it
+    // keep one rate for all.
+    static constexpr std::uint32_t GroupRates = 1u << 6;
+    static constexpr std::uint32_t All = Horizon | ActorScale | DecisionRate | HabitBound | FineLattice | PairsBeside | GroupRates;
 };
 
 // Bounds on every size an agent derives from its descriptor, so that no descriptor or save can ask

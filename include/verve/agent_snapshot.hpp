@@ -11,9 +11,9 @@
 namespace verve {
 
 struct AgentSnapshot {
-    // 2: sensor groups, 3: action branches, 4: continuous actions (each written only by saves that
-    // have them).
-    static constexpr std::uint32_t kFormatVersion = 4;
+    // 2: sensor groups, 3: action branches, 4: continuous actions, 5: group rates (each written
+    // only by saves that have them).
+    static constexpr std::uint32_t kFormatVersion = 5;
 
     AgentDescriptor descriptor;
     bool learning = true;
@@ -51,8 +51,15 @@ struct AgentSnapshot {
     float horizonTrialSeconds = 0.0f;
     std::uint32_t horizonTrials = 0;
     float tdMeanSquare = 0.0f;
+    // Adaptation::GroupRates (with two or more sensor groups; otherwise empty): each lattice's log
+    // rate and gradient normaliser, and each feature's recent critic change (core/group_rates.hpp).
+    // Empty lists in a save of such an agent read as a fresh start (every rate equal).
+    std::vector<float> groupLogRates;
+    std::vector<float> groupNorms;
+    std::vector<float> groupHistory;
 
-    // Live eligibility traces: traceFeatures[j] with traceStride floats in traces (value, policy[A]).
+    // Live eligibility traces: traceFeatures[j] with traceStride floats in traces (value, policy[A]);
+    // a value trace lies in (0, 1], or up to GroupRates::traceLimit with group rates.
     std::uint32_t traceStride = 0;
     std::vector<std::uint32_t> traceFeatures;
     std::vector<float> traces;

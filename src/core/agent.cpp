@@ -38,7 +38,7 @@ core::WeightLayout weightLayoutFor(const AgentDescriptor& desc) {
 }
 
 BrainState::BrainState(const AgentDescriptor& d)
-    : desc((d.validate(), d)), weights(weightLayoutFor(desc)), rep(desc) {
+    : desc((d.validate(), d)), weights(weightLayoutFor(desc)), rep(desc), groupRates(desc, rep) {
     weights.resize(rep.featureCount());
 }
 
@@ -74,7 +74,16 @@ void Agent::Impl::endTrial() {
     if (learning) brain->horizon.seeTrial(stretch.trialLongest());
 }
 
+void Agent::Impl::markStep(std::uint32_t action, const float* gradients) {
+    if (!brain->groupRates.active()) return td.mark(current, action, rep.featureCount(), gradients);
+    // Each lattice's rate enters through its features' traces (core/group_rates.hpp).
+    brain->groupRates.scale(rep, current, scaled);
+    td.mark(scaled, action, rep.featureCount(), gradients);
+}
+
 void Agent::Impl::learnReal(float delta, const StepConstants& k, float decay) {
+    // Before the traces decay: the rates learn from the traces this error credits.
+    brain->groupRates.learn(rep, td, delta, k.rates.value);
     td.trainAndDecay(weights, delta, k.rates, decay, ahead);
     if (decay > 0.0f) brain->tdScale.see(delta);
     stats.tdError = delta;
@@ -219,11 +228,16 @@ void Agent::Impl::reserveFor(std::uint32_t features, std::size_t active) {
     // `previous` only ever swaps buffers with it: scratch follows the neighbourhood, not the RBFs.
     rep.reserve(features);
     weights.reserve(features);
+    brain->groupRates.reserve(features);
     reserveBody(features, active);
 }
 
 void Agent::Impl::reserveBody(std::uint32_t features, std::size_t active) {
     core::reserveRoom(current, active);
+    if (brain->groupRates.active()) {
+        core::reserveRoom(scaled, active);
+        if (groupGradient.size() < brain->groupRates.lattices()) groupGradient.resize(brain->groupRates.lattices());
+    }
     core::reserveRoom(probabilities, td.traceStride());  // a restore may have left it numActions
     td.reserve(features, active);
     if (desc.planning) planner.reserve(features);
@@ -318,6 +332,7 @@ std::uint32_t Agent::Impl::step(float reward, ObservationView obs, float dt, Act
     if (grows) {
         s.rep.addMissing(obs.discrete, s.normalized.data(), s.current);
         s.weights.resize(s.rep.featureCount());
+        s.brain->groupRates.grow(s.rep.featureCount());
     }
     // Nothing below allocates.
     if (overBudget) s.noteBudgetReached();
@@ -358,7 +373,7 @@ std::uint32_t Agent::Impl::step(float reward, ObservationView obs, float dt, Act
             }
         }
     }
-    if (s.learning && s.learnsFromRealSteps()) s.td.mark(s.current, action, s.rep.featureCount(), gradients);
+    if (s.learning && s.learnsFromRealSteps()) s.markStep(action, gradients);
     s.endStep(obs, dt, action, gradients);
     return action;
 }

@@ -44,6 +44,9 @@ struct Agent::Impl {
     // A real step's TD error trains the critic and actor (traces then decay by `decay`); the
     // error's size informs Adaptation::ActorScale (core/td_scale.hpp).
     void learnReal(float delta, const StepConstants& k, float decay);
+    // mark() of this step's features: with Adaptation::GroupRates, each activation times its
+    // lattice's scale (core/group_rates.hpp).
+    void markStep(std::uint32_t action, const float* gradients);
     // The TD error of the real step that ends in `current` with (clamped) reward r.
     float realTdError(float r, const StepConstants& k) const;
     // Where a state counts as hopeless for this step's choice (core::hopelessValue), and what the
@@ -82,12 +85,14 @@ struct Agent::Impl {
     // measures are to see in `seen`; commitShared adds that to the brain (in body order), then
     // td.trainPart trains the weights.
     struct SharedStep {
-        bool seesReward = false, seesDelta = false;
+        bool seesReward = false, seesDelta = false, learns = false;
         float reward = 0.0f, delta = 0.0f;
+        float eta = 0.0f;  // the critic's rate, for Adaptation::GroupRates
     };
     bool prepareShared(float reward, ObservationView obs, float dt, core::LookupScratch& scratch, std::uint32_t parts,
                        SharedStep& seen);
-    static void commitShared(BrainState& brain, const SharedStep& seen);
+    // What `body` saw, into its brain's measures (called in body order).
+    static void commitShared(BrainState& brain, const SharedStep& seen, const Impl& body);
     // An update that needed an RBF the budget did not allow: counted and reported (once).
     void noteBudgetReached();
     // probabilities: chooseAction's activations, divided by their sum (uniform over the allowed
@@ -156,6 +161,10 @@ struct Agent::Impl {
     core::TeacherMemory teacher;
     // Continuous actions (desc.continuousActions): their latest values and noise.
     core::ContinuousActions continuous;
+    // Adaptation::GroupRates only: the step's features as mark() takes them (markStep), and a
+    // batch's gradient of this body's step, applied in body order (core/shared_step.cpp).
+    std::vector<core::ActiveFeature> scaled;
+    std::vector<float> groupGradient;
 };
 
 core::WeightLayout weightLayoutFor(const AgentDescriptor& desc);

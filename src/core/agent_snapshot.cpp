@@ -49,6 +49,27 @@ void restoreContinuous(const AgentSnapshot& snap, Agent::Impl& s) {
     s.continuous.restore(snap.continuousNoise, snap.continuousNoiseRunning, snap.continuousValues);
 }
 
+// The group rates (core/group_rates.hpp): none in a save (or empty lists) start them afresh.
+void restoreGroupRates(const AgentSnapshot& snap, core::GroupRates& rates, std::size_t features) {
+    const bool saved = !snap.groupLogRates.empty() || !snap.groupNorms.empty() || !snap.groupHistory.empty();
+    if (!saved) return rates.restore(std::vector<float>(rates.lattices(), 0.0f), std::vector<float>(rates.lattices(), 0.0f),
+                                     std::vector<float>(rates.active() ? features : 0, 0.0f));
+    if (!rates.active()) corrupt("group rates are saved for an agent without two or more sensor groups that adapt their rates");
+    requireSize(snap.groupLogRates.size(), rates.lattices(), "group log rates");
+    requireSize(snap.groupNorms.size(), rates.lattices(), "group norms");
+    requireSize(snap.groupHistory.size(), features, "group history");
+    for (float v : snap.groupLogRates) {
+        if (!(std::fabs(v) <= core::GroupRates::kLogLimit)) corrupt("a group's log rate lies beyond +-6 or is not finite");
+    }
+    for (float v : snap.groupNorms) {
+        if (!(v >= 0.0f && std::isfinite(v))) corrupt("a group's norm is negative or not finite");
+    }
+    for (float v : snap.groupHistory) {
+        if (!(std::fabs(v) <= core::GroupRates::kHistoryLimit)) corrupt("a feature's group history lies beyond +-1e6 or is not finite");
+    }
+    rates.restore(snap.groupLogRates, snap.groupNorms, snap.groupHistory);
+}
+
 }  // namespace
 
 std::unique_ptr<Agent::Impl> restoreAgent(const AgentSnapshot& snap) {
@@ -103,6 +124,7 @@ std::unique_ptr<Agent::Impl> restoreAgent(const AgentSnapshot& snap) {
     s.brain->horizon.meanTrialSeconds = snap.horizonTrialSeconds;
     s.brain->horizon.trials = snap.horizonTrials;
     s.brain->tdScale.meanSquare = snap.tdMeanSquare;
+    restoreGroupRates(snap, s.brain->groupRates, count);
 
     // Traces: optional (an empty list restores none).
     if (!snap.traceFeatures.empty() || !snap.traces.empty()) {
@@ -118,7 +140,10 @@ std::unique_ptr<Agent::Impl> restoreAgent(const AgentSnapshot& snap) {
             // A live value trace lies in (0, 1] and bounds the feature's policy traces (a continuous
             // action's, which have either sign, in size).
             const float* e = snap.traces.data() + i * stride;
-            if (!(e[0] > 0.0f && e[0] <= 1.0f)) corrupt("value trace of feature " + std::to_string(f) + " is outside (0, 1]");
+            const float limit = s.brain->groupRates.traceLimit();
+            if (!(e[0] > 0.0f && e[0] <= limit)) {
+                corrupt("value trace of feature " + std::to_string(f) + " is outside (0, " + std::to_string(limit) + "]");
+            }
             const std::uint32_t signedFrom = 1 + s.td.columns();
             for (std::uint32_t k = 1; k < stride; ++k) {
                 if (e[k] < (k < signedFrom ? 0.0f : -e[0]) || e[k] > e[0]) {
@@ -195,6 +220,9 @@ void snapshotBrain(const BrainState& brain, AgentSnapshot& snap) {
     snap.horizonTrialSeconds = brain.horizon.meanTrialSeconds;
     snap.horizonTrials = brain.horizon.trials;
     snap.tdMeanSquare = brain.tdScale.meanSquare;
+    snap.groupLogRates = brain.groupRates.logRates();
+    snap.groupNorms = brain.groupRates.norms();
+    snap.groupHistory = brain.groupRates.history();
     snap.traceStride = 1 + core::ActionBranches::of(brain.desc).columns + 2 * brain.desc.continuousActions;
 }
 

@@ -476,7 +476,7 @@ void Batch::update(const BatchStep& s) {
         b.runPhase(Phase::Prepare, bodies, 32);
         for (std::uint32_t g = 0; g + 1 < b.phasedStart.size(); ++g) {
             for (std::uint32_t k = b.phasedStart[g]; k < b.phasedStart[g + 1]; ++k) {
-                if (b.staged[k] != nullptr) Agent::Impl::commitShared(*b.groupBrain[g], b.seen[k]);
+                if (b.staged[k] != nullptr) Agent::Impl::commitShared(*b.groupBrain[g], b.seen[k], *s.agents[b.phased[k]]->impl_);
             }
         }
         b.runPhase(Phase::Train, phasedGroups * b.parts, 1);

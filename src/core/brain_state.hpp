@@ -3,6 +3,7 @@
 #pragma once
 #include <cstdint>
 
+#include "core/group_rates.hpp"
 #include "core/horizon.hpp"
 #include "core/state_representation.hpp"
 #include "core/td_scale.hpp"
@@ -28,11 +29,14 @@ struct BrainState {
     // brain made now, false for one loaded from a save that predates them, which keeps its meaning.
     bool modelPredictsChange = true;
     // What the adaptations measure over every body's experience (AgentDescriptor::adaptation):
-    // how long trials last (core/horizon.hpp) and how large TD errors are (core/td_scale.hpp).
+    // how long trials last (core/horizon.hpp), how large TD errors are (core/td_scale.hpp) and, at
+    // the end, which sensor groups predict them (core/group_rates.hpp).
     core::AdaptiveHorizon horizon;
     core::TdScale tdScale;
     std::uint64_t bodiesMade = 0;  // numbers each new body's random stream
     core::StateRepresentation rep;
+    // How fast each sensor group learns (Adaptation::GroupRates; after rep, which it reads).
+    core::GroupRates groupRates;
 };
 
 }  // namespace verve

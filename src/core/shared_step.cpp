@@ -46,8 +46,12 @@ bool Agent::Impl::prepareShared(float reward, ObservationView obs, float dt, cor
         const float delta = s.realTdError(r, k);
         s.td.stage(delta, k.rates);
         seen.seesDelta = k.traceDecay > 0.0f;  // as learnReal
+        seen.learns = true;
         seen.delta = delta;
+        seen.eta = k.rates.value;
         s.stats.tdError = delta;
+        // The group rates' gradient against the brain as the batch found it; commitShared applies it.
+        if (s.brain->groupRates.active()) s.brain->groupRates.gradient(s.rep, s.td, delta, s.groupGradient.data());
     }
     const bool samples = s.selection == ActionSelection::Sample;
     const float hopeless = s.hopelessFor(samples, k);
@@ -61,14 +65,21 @@ bool Agent::Impl::prepareShared(float reward, ObservationView obs, float dt, cor
     // The traces are the body's own: kept as they were for the brain's change, they decay and take
     // the new step's at once.
     if (learns) s.td.keepAndDecay(k.traceDecay, parts);
-    if (s.learning && s.learnsFromRealSteps()) s.td.mark(s.current, action, s.rep.featureCount(), gradients);
+    if (s.learning && s.learnsFromRealSteps()) s.markStep(action, gradients);
     s.endStep(obs, dt, action, gradients);
     return true;
 }
 
-void Agent::Impl::commitShared(BrainState& brain, const SharedStep& seen) {
+void Agent::Impl::commitShared(BrainState& brain, const SharedStep& seen, const Impl& body) {
     if (seen.seesReward) brain.rewards.see(seen.reward);
     if (seen.seesDelta) brain.tdScale.see(seen.delta);
+    if (seen.learns && brain.groupRates.active()) {
+        // The rates, then the history from the traces the body kept as they were (their order by
+        // part does not matter: each feature's history changes once).
+        brain.groupRates.apply(body.groupGradient.data());
+        brain.groupRates.remember(body.td.keptFeatures(), body.td.keptRows(), body.td.keptCount(), body.td.traceStride(),
+                                  seen.delta, seen.eta);
+    }
 }
 
 }  // namespace verve

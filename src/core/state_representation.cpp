@@ -28,12 +28,15 @@ StateRepresentation::StateRepresentation(const AgentDescriptor& desc)
         auto sensors = groupSensors(spec.sensors);
         const bool all = sensors.size() == numContinuous_;
         auto circular = circularOf(desc, sensors);
-        groups_.push_back(Group{std::move(sensors), all, RbfLattice(desc.discreteSensors, circular, spec.resolution)});
+        groups_.push_back(Group{std::move(sensors), all, RbfLattice(desc.discreteSensors, circular, spec.resolution), spec.share});
         // A lattice beside the agent's groups counts its share (core/lattice_layout.hpp).
-        activationSum_ += spec.share * groups_.back().lattice.activationSum();
+        activationSum_ += latticeSum(groups_.size() - 1);
     }
     if (desc.allocation == RbfAllocation::Full) {
-        for (auto& g : groups_) g.lattice.allocateFullLattice(featureCount_);
+        for (std::size_t i = 0; i < groups_.size(); ++i) {
+            groups_[i].lattice.allocateFullLattice(featureCount_);
+            latticeOf_.resize(featureCount_, static_cast<std::uint8_t>(i));
+        }
     }
 }
 
@@ -73,6 +76,7 @@ std::uint32_t StateRepresentation::addMissing(const std::int32_t* discrete, cons
             }
         }
         reserveRoom(out, out.size() + missing());
+        reserveRoom(latticeOf_, std::size_t(featureCount_) + missing());
     } catch (...) {
         for (std::size_t i = 0; i < prepared; ++i) {
             if ((own_.uncovered >> i) & 1u) groups_[i].lattice.cancel(slots[i]);
@@ -84,6 +88,7 @@ std::uint32_t StateRepresentation::addMissing(const std::int32_t* discrete, cons
         if (!((own_.uncovered >> i) & 1u)) continue;
         const Group& g = groups_[i];
         groups_[i].lattice.commit(slots[i], point(g, continuous, buffer.data()), featureCount_);
+        latticeOf_.push_back(static_cast<std::uint8_t>(i));
         out.push_back(ActiveFeature{featureCount_++, 1.0f});
         ++added;
     }
@@ -112,7 +117,9 @@ void StateRepresentation::features(std::vector<std::uint64_t>& keys, std::vector
 void StateRepresentation::addFeature(std::uint64_t key, const float* centre) {
     Group& g = groups_[key / keyCount_];
     std::array<float, LookupScratch::kMaxDims> buffer;
+    latticeOf_.reserve(std::size_t(featureCount_) + 1);  // before the lattice changes
     g.lattice.addFeature(key % keyCount_, point(g, centre, buffer.data()), featureCount_);
+    latticeOf_.push_back(static_cast<std::uint8_t>(key / keyCount_));
     ++featureCount_;
 }
 

@@ -70,6 +70,9 @@ public:
     // Divides the learning rates: the expected activation sum, summed over the lattices (one
     // beside the agent's groups counts its share of its own: core/lattice_layout.hpp).
     float activationSum() const { return activationSum_; }
+    // Lattice k's part of that sum, and which lattice made feature f (core/group_rates.hpp).
+    float latticeSum(std::size_t k) const { return groups_[k].share * groups_[k].lattice.activationSum(); }
+    std::uint8_t latticeOf(std::uint32_t feature) const { return latticeOf_[feature]; }
 
     // Restores a saved feature (a key below keyCount(), a centre of numContinuous values, both
     // validated) as the next feature.
@@ -82,6 +85,7 @@ private:
         std::vector<std::uint32_t> sensors;  // continuous sensor indices, lowest first
         bool all = false;                    // every continuous sensor in order: no gather needed
         RbfLattice lattice;
+        float share = 1.0f;                  // of its expected activation sum in the rates' divisor
     };
     // The group's sensor values of an observation: the observation itself when the group holds
     // every sensor, else gathered into `buffer`.
@@ -92,6 +96,7 @@ private:
     std::uint32_t numContinuous_ = 0;
     std::uint64_t keyCount_ = 1;  // discrete combinations
     std::uint32_t featureCount_ = 0;
+    std::vector<std::uint8_t> latticeOf_;  // per feature (at most kMaxSensorGroups lattices)
     float activationSum_ = 0.0f;
     mutable LookupScratch own_;
 };

@@ -169,6 +169,13 @@ public:
     std::uint32_t branchCount() const { return branchCount_; }  // 1: one action set
     const ActionBranches& branches() const { return branches_; }  // cold: read only with branches
     std::uint32_t liveCount() const { return liveCount_; }
+    // The live features (liveCount() of them) and every feature's traces (traceStride() each);
+    // after keepAndDecay, what it kept: keptCount() features and their traces as they were.
+    const std::uint32_t* live() const { return live_.data(); }
+    const float* traces() const { return traces_.data(); }
+    std::size_t keptCount() const { return staged_ ? stagedLive_.size() : 0; }
+    const std::uint32_t* keptFeatures() const { return stagedLive_.data(); }
+    const float* keptRows() const { return stagedRows_.data(); }
     std::uint32_t traceStride() const { return stride_; }
     std::vector<std::uint32_t> liveFeatures() const;
     std::vector<float> liveTraces() const;  // traceStride() values per live feature

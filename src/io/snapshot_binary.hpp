@@ -19,8 +19,8 @@ namespace verve::io {
 
 inline constexpr char kBinaryMagic[8] = {'V', 'E', 'R', 'V', 'E', 'B', 'I', 'N'};
 // 2: the reward range; 3: model_predicts_change; 4: the final reward range
-inline constexpr std::uint32_t kBinaryFormatVersion = 8;  // 6: sensor groups, 7: action branches
-// 8: continuous actions
+inline constexpr std::uint32_t kBinaryFormatVersion = 9;  // 6: sensor groups, 7: action branches
+// 8: continuous actions, 9: group rates
 inline constexpr std::size_t kBinaryHeaderBytes = 32;
 
 // True when `data` starts like a binary save (a prefix of the magic counts, so that a save cut

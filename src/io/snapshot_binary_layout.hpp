@@ -80,6 +80,11 @@ void transferPayload(Io& io, Snapshot& s, Flag& shortTerm, std::uint32_t version
     }
     if (version >= 7) io.list("action_branches", s.descriptor.actionBranches);
     if (version >= 8) io.value("continuous_actions", s.descriptor.continuousActions);
+    if (version >= 9) {
+        io.list("group_log_rates", s.groupLogRates);
+        io.list("group_norms", s.groupNorms);
+        io.list("group_history", s.groupHistory);
+    }
     io.flag("short_term_memory", shortTerm);
     if (!shortTerm) return;
     if (version >= 5) io.value("trial_seconds", s.trialSeconds);

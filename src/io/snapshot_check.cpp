@@ -113,6 +113,17 @@ void checkTraces(const AgentSnapshot& s) {
     }
 }
 
+// Adaptation::GroupRates' state: all three lists or none, a rate and a norm per lattice and a
+// history value per feature (the core checks the lattice count and the values' ranges).
+void checkGroupRates(const AgentSnapshot& s) {
+    if (s.groupLogRates.empty() && s.groupNorms.empty() && s.groupHistory.empty()) return;
+    requireSize("groupNorms", s.groupNorms.size(), s.groupLogRates.size(), "one per group log rate");
+    requireSize("groupHistory", s.groupHistory.size(), s.featureKeys.size(), "one per feature");
+    requireFinite("groupLogRates", s.groupLogRates);
+    requireFinite("groupNorms", s.groupNorms);
+    requireFinite("groupHistory", s.groupHistory);
+}
+
 void checkPrevious(const AgentSnapshot& s) {
     if (!s.hasPrevious) return;
     const AgentDescriptor& d = s.descriptor;
@@ -147,6 +158,7 @@ void checkSnapshot(const AgentSnapshot& s) {
     checkDescriptor(s.descriptor);
     checkFeatures(s);
     checkTraces(s);
+    checkGroupRates(s);
     checkPrevious(s);
     if (s.rng[0] == 0 && s.rng[1] == 0 && s.rng[2] == 0 && s.rng[3] == 0) {
         fail("rng state is all zero (not a state the generator can be in)");

@@ -169,6 +169,11 @@ void readFeatures(pugi::xml_node root, AgentSnapshot& s) {
     pugi::xml_node w = child(root, "weights");
     s.stride = readUint32(w, "stride");
     s.weights = readList<float>(w, "<weights>");
+    if (pugi::xml_node g = root.child("group_rates")) {
+        s.groupLogRates = readChildList<float>(g, "log_rates");
+        s.groupNorms = readChildList<float>(g, "norms");
+        s.groupHistory = readChildList<float>(g, "history");
+    }
 }
 
 void readShortTermMemory(pugi::xml_node root, AgentSnapshot& s) {

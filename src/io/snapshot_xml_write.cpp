@@ -127,6 +127,12 @@ void writeFeatures(pugi::xml_node root, const AgentSnapshot& s) {
     pugi::xml_node w = root.append_child("weights");
     setNumber(w, "stride", std::uint64_t{s.stride});
     w.text().set(listText(s.weights, s.stride).c_str());
+    if (!s.groupLogRates.empty() || !s.groupNorms.empty() || !s.groupHistory.empty()) {
+        pugi::xml_node g = root.append_child("group_rates");
+        appendList(g, "log_rates", s.groupLogRates, 16);
+        appendList(g, "norms", s.groupNorms, 16);
+        appendList(g, "history", s.groupHistory, 16);
+    }
 }
 
 void writeShortTermMemory(pugi::xml_node root, const AgentSnapshot& s) {
@@ -166,9 +172,13 @@ std::string snapshotToXml(const AgentSnapshot& snapshot, bool includeTraces) {
     pugi::xml_document doc;
     pugi::xml_node root = doc.append_child(kRootElement);
     // The oldest version that has what the save holds: older libraries still read what they can,
-    // and refuse what they would misread (groups, branches, continuous actions).
+    // and refuse what they would misread (groups, branches, continuous actions, group rates).
     const AgentDescriptor& d = snapshot.descriptor;
-    const std::uint64_t version = d.continuousActions != 0 ? 4u : !d.actionBranches.empty() ? 3u : !d.sensorGroups.empty() ? 2u : 1u;
+    const std::uint64_t version = !snapshot.groupLogRates.empty() ? 5u
+                                  : d.continuousActions != 0      ? 4u
+                                  : !d.actionBranches.empty()     ? 3u
+                                  : !d.sensorGroups.empty()       ? 2u
+                                                                  : 1u;
     setNumber(root, "format_version", version);
     writeDescriptor(root, snapshot.descriptor);
     writeState(root, snapshot);

@@ -347,7 +347,7 @@ TEST(CApiDesc, AdaptationReachesTheAgentAndUnknownBitsAreRefused) {
     ASSERT_EQ(verve_agent_get_desc(agent, &back), VERVE_OK);
     EXPECT_EQ(back.adaptation, uint64_t{VERVE_ADAPT_HORIZON});
     verve_agent_destroy(agent);
-    for (uint64_t bad : {uint64_t{64}, uint64_t{VERVE_ADAPT_ALL} | (uint64_t{1} << 40)}) {
+    for (uint64_t bad : {uint64_t{128}, uint64_t{VERVE_ADAPT_ALL} | (uint64_t{1} << 40)}) {
         d.adaptation = bad;
         agent = nullptr;
         EXPECT_EQ(verve_agent_create(&d, &agent), VERVE_ERROR_INVALID_ARGUMENT) << bad;

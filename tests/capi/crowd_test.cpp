@@ -49,10 +49,12 @@ struct Crowd {
         for (uint64_t copy = 0; copy < 8; ++copy) add(10 * copy);
     }
     void add(uint64_t seed) {
+        // `many`: six sensors in groups, whose rates the bodies learn too (VERVE_ADAPT_GROUP_RATES).
         const verve_agent_desc tiny = shape(0, 2, 8, 2, seed + 1), grid = shape(10, 0, 10, 5, seed + 2),
-                               planner = shape(5, 1, 10, 3, seed + 3, true), cart = shape(0, 4, 4, 3, seed + 4);
+                               planner = shape(5, 1, 10, 3, seed + 3, true), cart = shape(0, 4, 4, 3, seed + 4),
+                               many = shape(0, 6, 5, 3, seed + 5);
         const std::size_t first = brains.size();
-        for (const auto& d : {tiny, cart}) {
+        for (const auto& d : {tiny, cart, many}) {
             verve_brain* b = nullptr;
             EXPECT_EQ(verve_brain_create(&d, &b), VERVE_OK) << verve_last_error();
             brains.push_back(b);
@@ -72,8 +74,8 @@ struct Crowd {
             return a;
         };
         verve_agent* twice = agent(tiny);
-        for (verve_agent* a : {twice, body(0), agent(grid), body(0), agent(planner), body(1), body(0), agent(tiny),
-                               body(1), body(0), body(1), body(0), agent(grid), twice}) {
+        for (verve_agent* a : {twice, body(0), agent(grid), body(0), agent(planner), body(1), body(2), body(0), agent(tiny),
+                               body(1), body(2), body(0), body(1), body(0), agent(grid), body(2), twice}) {
             items.push_back(a);
             itemBody.push_back(ownedBody[static_cast<std::size_t>(std::find(owned.begin(), owned.end(), a) - owned.begin())]);
         }

@@ -189,9 +189,10 @@ std::string asVersion(std::string bytes, const AgentSnapshot& snap, std::uint32_
     if (at == std::string::npos) return {};
     // After the final reward range: version 5's 16 bytes, version 6's 9 (the grouping and a list
     // of groups, empty for these agents), version 7's 8 (an empty list of action branches),
-    // version 8's 4 (no continuous actions), then the short-term memory flag and, from version 5,
-    // the trial's seconds.
+    // version 8's 4 (no continuous actions), version 9's group rates (three lists), then the
+    // short-term memory flag and, from version 5, the trial's seconds.
     // With short-term memory, version 8's 13 bytes of reward stretches follow the trial's seconds.
+    bytes.erase(at + 58, 24 + 4 * (snap.groupLogRates.size() + snap.groupNorms.size() + snap.groupHistory.size()));
     const bool shortTerm = bytes[at + 58] == 1;
     if (shortTerm) bytes.erase(at + 63, 13);
     if (version < 5 && shortTerm) bytes.erase(at + 59, 4);

@@ -105,8 +105,8 @@ TEST_F(CorruptSave, NotXmlOrNotAnAgent) {
 }
 
 TEST_F(CorruptSave, FutureVersionIsAVersionError) {
-    expectRefused(edited([](pugi::xml_node r) { r.attribute("format_version").set_value("5"); }),
-                  ErrorCode::Version, "format version 5");
+    expectRefused(edited([](pugi::xml_node r) { r.attribute("format_version").set_value("6"); }),
+                  ErrorCode::Version, "format version 6");
     expectRefused(edited([](pugi::xml_node r) { r.attribute("format_version").set_value("0"); }),
                   ErrorCode::Format, "format_version");
     expectRefused(edited([](pugi::xml_node r) { r.remove_attribute("format_version"); }),

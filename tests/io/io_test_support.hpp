@@ -162,6 +162,9 @@ inline void expectSameSnapshot(const AgentSnapshot& a, const AgentSnapshot& b, b
     EXPECT_EQ(std::memcmp(&a.horizonTrialSeconds, &b.horizonTrialSeconds, sizeof(float)), 0);
     EXPECT_EQ(a.horizonTrials, b.horizonTrials);
     EXPECT_EQ(std::memcmp(&a.tdMeanSquare, &b.tdMeanSquare, sizeof(float)), 0);
+    EXPECT_TRUE(sameBits(a.groupLogRates, b.groupLogRates));
+    EXPECT_TRUE(sameBits(a.groupNorms, b.groupNorms));
+    EXPECT_TRUE(sameBits(a.groupHistory, b.groupHistory));
     EXPECT_EQ(a.rng, b.rng);
     EXPECT_EQ(a.steps, b.steps);
     EXPECT_EQ(std::memcmp(&a.modelError, &b.modelError, sizeof(float)), 0);

@@ -47,8 +47,11 @@ namespace Verve
         /// lattice, one over each neighbouring pair: what two sensors decide is learned across the
         /// others.</summary>
         PairsBeside = 32,
+        /// <summary>Two or more sensor groups learn at rates of their own, learned from the TD
+        /// errors: the groups that predict them take more of each step.</summary>
+        GroupRates = 64,
         /// <summary>All of them (the default).</summary>
-        All = Horizon | ActorScale | DecisionRate | HabitBound | FineLattice | PairsBeside,
+        All = Horizon | ActorScale | DecisionRate | HabitBound | FineLattice | PairsBeside | GroupRates,
     }
 
     /// <summary>Intrinsic reward added during planning (<c>verve_curiosity</c>).</summary>

@@ -141,7 +141,7 @@ T.check("saves (XML and binary) keep them: the next updates' values are identica
   drive(agent, 0, 100)
   local xml, binary = agent:save_string(), agent:save_binary_string()
   assert(xml:find('format_version="4"'), "an XML save with continuous actions is format 4")
-  assert(binary:sub(1, 9) == "VERVEBIN\8", "a binary save with continuous actions is format 8")
+  assert(binary:sub(1, 9) == "VERVEBIN\9", "a binary save is format 9")
   local copies = { verve.load_string(xml), verve.load_string(binary) }
   local actions, values = drive(agent, 100, 40)
   for _, copy in ipairs(copies) do
