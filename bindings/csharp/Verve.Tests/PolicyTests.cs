@@ -132,7 +132,7 @@ namespace Verve.Tests
             Assert.Equal(Adaptation.All, new AgentOptions().Adaptation);
             var options = new AgentOptions { Actions = 2, Adaptation = Adaptation.None }.AddContinuousSensor(false);
             using (var agent = new Agent(options)) Assert.Equal(Adaptation.None, agent.Options.Adaptation);
-            var ex = Assert.Throws<VerveException>(() => new Agent(new AgentOptions { Actions = 2, Adaptation = (Adaptation)64 }));
+            var ex = Assert.Throws<VerveException>(() => new Agent(new AgentOptions { Actions = 2, Adaptation = (Adaptation)128 }));
             Assert.Contains("adaptation", ex.Message);
         }
     }
