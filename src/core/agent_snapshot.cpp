@@ -49,11 +49,12 @@ void restoreContinuous(const AgentSnapshot& snap, Agent::Impl& s) {
     s.continuous.restore(snap.continuousNoise, snap.continuousNoiseRunning, snap.continuousValues);
 }
 
-// The group rates (core/group_rates.hpp): none in a save (or empty lists) start them afresh.
-void restoreGroupRates(const AgentSnapshot& snap, core::GroupRates& rates, std::size_t features) {
+// The group rates (core/group_rates.hpp): none in a save (or empty lists) start them afresh, as a
+// new agent's are, with a history of 0 for every restored feature.
+void restoreGroupRates(const AgentSnapshot& snap, const core::StateRepresentation& rep, core::GroupRates& rates,
+                       std::size_t features) {
     const bool saved = !snap.groupLogRates.empty() || !snap.groupNorms.empty() || !snap.groupHistory.empty();
-    if (!saved) return rates.restore(std::vector<float>(rates.lattices(), 0.0f), std::vector<float>(rates.lattices(), 0.0f),
-                                     std::vector<float>(rates.active() ? features : 0, 0.0f));
+    if (!saved) return rates.grow(static_cast<std::uint32_t>(features));
     if (!rates.active()) corrupt("group rates are saved for an agent without two or more sensor groups that adapt their rates");
     requireSize(snap.groupLogRates.size(), rates.lattices(), "group log rates");
     requireSize(snap.groupNorms.size(), rates.lattices(), "group norms");
@@ -67,7 +68,7 @@ void restoreGroupRates(const AgentSnapshot& snap, core::GroupRates& rates, std::
     for (float v : snap.groupHistory) {
         if (!(std::fabs(v) <= core::GroupRates::kHistoryLimit)) corrupt("a feature's group history lies beyond +-1e6 or is not finite");
     }
-    rates.restore(snap.groupLogRates, snap.groupNorms, snap.groupHistory);
+    rates.restore(rep, snap.groupLogRates, snap.groupNorms, snap.groupHistory);
 }
 
 }  // namespace
@@ -124,7 +125,7 @@ std::unique_ptr<Agent::Impl> restoreAgent(const AgentSnapshot& snap) {
     s.brain->horizon.meanTrialSeconds = snap.horizonTrialSeconds;
     s.brain->horizon.trials = snap.horizonTrials;
     s.brain->tdScale.meanSquare = snap.tdMeanSquare;
-    restoreGroupRates(snap, s.brain->groupRates, count);
+    restoreGroupRates(snap, s.rep, s.brain->groupRates, count);
 
     // Traces: optional (an empty list restores none).
     if (!snap.traceFeatures.empty() || !snap.traces.empty()) {
@@ -133,6 +134,7 @@ std::unique_ptr<Agent::Impl> restoreAgent(const AgentSnapshot& snap) {
         requireFinite(snap.traces, "trace");
         std::vector<bool> seen(count, false);
         const std::uint32_t stride = s.td.traceStride();
+        const float limit = s.brain->groupRates.traceLimit(s.rep);
         for (std::size_t i = 0; i < snap.traceFeatures.size(); ++i) {
             const auto f = snap.traceFeatures[i];
             if (f >= count || seen[f]) corrupt("trace list names feature " + std::to_string(f) + " twice or out of range");
@@ -140,7 +142,6 @@ std::unique_ptr<Agent::Impl> restoreAgent(const AgentSnapshot& snap) {
             // A live value trace lies in (0, 1] and bounds the feature's policy traces (a continuous
             // action's, which have either sign, in size).
             const float* e = snap.traces.data() + i * stride;
-            const float limit = s.brain->groupRates.traceLimit();
             if (!(e[0] > 0.0f && e[0] <= limit)) {
                 corrupt("value trace of feature " + std::to_string(f) + " is outside (0, " + std::to_string(limit) + "]");
             }

@@ -16,17 +16,20 @@ bool GroupRates::appliesTo(const AgentDescriptor& d) {
 GroupRates::GroupRates(const AgentDescriptor& d, const StateRepresentation& rep) : active_(appliesTo(d)) {
     if (!active_) return;
     const std::size_t n = rep.groupCount();
-    float total = 0.0f, least = rep.latticeSum(0);
-    for (std::size_t k = 0; k < n; ++k) {
-        latticeSums_.push_back(rep.latticeSum(k));
-        total += rep.latticeSum(k);
-        least = std::min(least, rep.latticeSum(k));
-    }
-    traceLimit_ = total / least * (1.0f + 1e-5f);  // the float rounding of a scale
     logRates_.assign(n, 0.0f);
     norms_.assign(n, 0.0f);
     scales_.assign(n, 1.0f);
     history_.assign(rep.featureCount(), 0.0f);
+}
+
+float GroupRates::traceLimit(const StateRepresentation& rep) const {
+    if (!active_) return 1.0f;
+    float total = 0.0f, least = rep.latticeSum(0);
+    for (std::size_t k = 0; k < lattices(); ++k) {
+        total += rep.latticeSum(k);
+        least = std::min(least, rep.latticeSum(k));
+    }
+    return total / least * (1.0f + 1e-5f);  // the float rounding of a scale
 }
 
 void GroupRates::reserve(std::uint32_t features) {
@@ -45,44 +48,50 @@ void GroupRates::scale(const StateRepresentation& rep, const std::vector<ActiveF
     }
 }
 
-void GroupRates::gradient(const StateRepresentation& rep, const TdLearner& td, float delta, float* out) const {
-    std::fill(out, out + logRates_.size(), 0.0f);
-    const float d = std::clamp(delta, -kHistoryLimit, kHistoryLimit);
+template <typename F>
+void GroupRates::sweep(const StateRepresentation& rep, const TdLearner& td, float delta, float* out, F&& f) const {
+    std::fill(out, out + lattices(), 0.0f);
     const std::uint32_t* live = td.live();
     const float* traces = td.traces();
     const std::size_t stride = td.traceStride();
     for (std::uint32_t j = 0; j < td.liveCount(); ++j) {
-        const std::uint32_t f = live[j];
-        // Features made since the history last grew have none yet (0).
-        if (f < history_.size()) out[rep.latticeOf(f)] += traces[std::size_t(f) * stride] * history_[f];
+        const std::uint32_t feature = live[j];
+        if (feature >= history_.size()) continue;  // made since the history last grew: none yet
+        const float e = traces[std::size_t(feature) * stride];
+        out[rep.latticeOf(feature)] += e * history_[feature];
+        f(feature, e);
     }
-    for (std::size_t k = 0; k < logRates_.size(); ++k) out[k] *= d;
+    const float d = std::clamp(delta, -kHistoryLimit, kHistoryLimit);
+    for (std::size_t k = 0; k < lattices(); ++k) out[k] *= d;
 }
 
-void GroupRates::apply(const float* gradient) {
+void GroupRates::gradient(const StateRepresentation& rep, const TdLearner& td, float delta, float* out) const {
+    sweep(rep, td, delta, out, [](std::uint32_t, float) {});
+}
+
+void GroupRates::apply(const StateRepresentation& rep, const float* gradient) {
     for (std::size_t k = 0; k < logRates_.size(); ++k) {
         const float g = std::isfinite(gradient[k]) ? gradient[k] : 0.0f;
         const float size = std::fabs(g);
         norms_[k] = std::max(size, norms_[k] + kNormAveraging * (size - norms_[k]));
         if (norms_[k] > 0.0f) logRates_[k] = std::clamp(logRates_[k] + kMetaRate * g / norms_[k], -kLogLimit, kLogLimit);
     }
-    rescale();
+    rescale(rep);
 }
 
-void GroupRates::rescale() {
+void GroupRates::rescale(const StateRepresentation& rep) {
     // Scales in proportion to e^(log rate), their activation-weighted mean 1.
     float weighted = 0.0f, total = 0.0f;
     for (std::size_t k = 0; k < logRates_.size(); ++k) {
         scales_[k] = std::exp(logRates_[k]);
-        weighted += scales_[k] * latticeSums_[k];
-        total += latticeSums_[k];
+        weighted += scales_[k] * rep.latticeSum(k);
+        total += rep.latticeSum(k);
     }
     const float norm = weighted > 0.0f ? total / weighted : 1.0f;
     for (float& scale : scales_) scale *= norm;
 }
 
 void GroupRates::rememberOne(std::uint32_t feature, float e, float delta, float eta) {
-    if (feature >= history_.size()) return;  // made since the history last grew
     float& h = history_[feature];
     h = std::clamp(h * std::max(0.0f, 1.0f - eta * e) + eta * delta * e, -kHistoryLimit, kHistoryLimit);
 }
@@ -90,33 +99,26 @@ void GroupRates::rememberOne(std::uint32_t feature, float e, float delta, float 
 void GroupRates::remember(const std::uint32_t* features, const float* rows, std::size_t count, std::uint32_t stride,
                           float delta, float eta) {
     const float d = std::clamp(delta, -kHistoryLimit, kHistoryLimit);
-    for (std::size_t j = 0; j < count; ++j) rememberOne(features[j], rows[j * stride], d, eta);
+    for (std::size_t j = 0; j < count; ++j) {
+        if (features[j] < history_.size()) rememberOne(features[j], rows[j * stride], d, eta);
+    }
 }
 
 void GroupRates::learn(const StateRepresentation& rep, const TdLearner& td, float delta, float eta) {
     if (!active_) return;
     // One pass: each live feature's part of the gradient reads its history before the step's change.
-    std::array<float, DescriptorLimits::kMaxSensorGroups> g{};
-    const std::uint32_t* live = td.live();
-    const float* traces = td.traces();
-    const std::size_t stride = td.traceStride();
+    std::array<float, DescriptorLimits::kMaxSensorGroups> g;
     const float d = std::clamp(delta, -kHistoryLimit, kHistoryLimit);
-    for (std::uint32_t j = 0; j < td.liveCount(); ++j) {
-        const std::uint32_t f = live[j];
-        if (f >= history_.size()) continue;
-        const float e = traces[std::size_t(f) * stride];
-        g[rep.latticeOf(f)] += e * history_[f];
-        rememberOne(f, e, d, eta);
-    }
-    for (std::size_t k = 0; k < logRates_.size(); ++k) g[k] *= d;
-    apply(g.data());
+    sweep(rep, td, delta, g.data(), [&](std::uint32_t feature, float e) { rememberOne(feature, e, d, eta); });
+    apply(rep, g.data());
 }
 
-void GroupRates::restore(const std::vector<float>& logRates, const std::vector<float>& norms, const std::vector<float>& history) {
+void GroupRates::restore(const StateRepresentation& rep, const std::vector<float>& logRates, const std::vector<float>& norms,
+                         const std::vector<float>& history) {
     logRates_ = logRates;
     norms_ = norms;
     history_ = history;
-    rescale();
+    rescale(rep);
 }
 
 }  // namespace verve::core

@@ -38,7 +38,7 @@ public:
     bool active() const { return active_; }
     // The largest value trace a scale allows: the scale of a lattice that takes the whole step
     // (every other log rate at its floor and this one at its ceiling is less); 1 without.
-    float traceLimit() const { return traceLimit_; }
+    float traceLimit(const StateRepresentation& rep) const;
     // Room for `features` features' history (before anything changes), then their history at 0.
     void reserve(std::uint32_t features);
     void grow(std::uint32_t features);
@@ -53,7 +53,7 @@ public:
     // gradient against the brain as the batch found it (its live traces, in their order), then,
     // in body order, the rates and the history from the traces the body kept.
     void gradient(const StateRepresentation& rep, const TdLearner& td, float delta, float* out) const;
-    void apply(const float* gradient);
+    void apply(const StateRepresentation& rep, const float* gradient);
     void remember(const std::uint32_t* features, const float* rows, std::size_t count, std::uint32_t stride, float delta,
                   float eta);
     std::size_t lattices() const { return logRates_.size(); }
@@ -64,16 +64,20 @@ public:
     const std::vector<float>& norms() const { return norms_; }
     const std::vector<float>& history() const { return history_; }
     // Restores them (validated: one log rate and norm per lattice, one history value per feature).
-    void restore(const std::vector<float>& logRates, const std::vector<float>& norms, const std::vector<float>& history);
+    void restore(const StateRepresentation& rep, const std::vector<float>& logRates, const std::vector<float>& norms,
+                 const std::vector<float>& history);
 
 private:
-    void rescale();
+    // Scales from the log rates, weighted by the lattices' expected activation sums.
+    void rescale(const StateRepresentation& rep);
+    // f(feature, e) for every live feature with a history (e its value trace), and the gradient
+    // of the step's TD error `delta` from them into `out`, one value per lattice.
+    template <typename F>
+    void sweep(const StateRepresentation& rep, const TdLearner& td, float delta, float* out, F&& f) const;
     // h = h (1 - eta e)+ + eta delta e: the critic weight's recent change, decaying as IDBD's does.
     void rememberOne(std::uint32_t feature, float e, float delta, float eta);
 
     bool active_ = false;
-    float traceLimit_ = 1.0f;
-    std::vector<float> latticeSums_;  // each lattice's expected activation sum (its share)
     std::vector<float> logRates_;
     std::vector<float> norms_;       // Autostep's v: a decaying maximum of |gradient|
     std::vector<float> scales_;      // e^(log rate), normalised

@@ -76,7 +76,7 @@ void Agent::Impl::commitShared(BrainState& brain, const SharedStep& seen, const 
     if (seen.learns && brain.groupRates.active()) {
         // The rates, then the history from the traces the body kept as they were (their order by
         // part does not matter: each feature's history changes once).
-        brain.groupRates.apply(body.groupGradient.data());
+        brain.groupRates.apply(brain.rep, body.groupGradient.data());
         brain.groupRates.remember(body.td.keptFeatures(), body.td.keptRows(), body.td.keptCount(), body.td.traceStride(),
                                   seen.delta, seen.eta);
     }

@@ -117,7 +117,8 @@ void StateRepresentation::features(std::vector<std::uint64_t>& keys, std::vector
 void StateRepresentation::addFeature(std::uint64_t key, const float* centre) {
     Group& g = groups_[key / keyCount_];
     std::array<float, LookupScratch::kMaxDims> buffer;
-    latticeOf_.reserve(std::size_t(featureCount_) + 1);  // before the lattice changes
+    // Before the lattice changes; geometric, as a restore adds every feature one by one.
+    reserveRoom(latticeOf_, std::size_t(featureCount_) + 1);
     g.lattice.addFeature(key % keyCount_, point(g, centre, buffer.data()), featureCount_);
     latticeOf_.push_back(static_cast<std::uint8_t>(key / keyCount_));
     ++featureCount_;

@@ -35,7 +35,7 @@ TEST(GroupRates, OnlyAgentsOfTwoOrMoreSensorGroupsWithTheBitLearnThem) {
     EXPECT_FALSE(GroupRates::appliesTo(custom));
     const StateRepresentation rep(continuousSensors(2));
     EXPECT_FALSE(GroupRates(continuousSensors(2), rep).active());
-    EXPECT_EQ(GroupRates(continuousSensors(2), rep).traceLimit(), 1.0f);
+    EXPECT_EQ(GroupRates(continuousSensors(2), rep).traceLimit(rep), 1.0f);
 }
 
 // What one lattice gains the others give: the scales' mean weighted by the lattices' activation
@@ -48,7 +48,7 @@ TEST(GroupRates, ScalesShareTheStepAndFollowTheGradient) {
     ASSERT_EQ(rates.lattices(), 11u);
     std::vector<float> g(rates.lattices(), -1.0f);
     g[0] = 1.0f;
-    for (int step = 0; step < 200; ++step) rates.apply(g.data());
+    for (int step = 0; step < 200; ++step) rates.apply(rep, g.data());
     double weighted = 0.0, total = 0.0;
     for (std::size_t k = 0; k < rates.lattices(); ++k) {
         weighted += rates.scaleOf(k) * rep.latticeSum(k);
@@ -56,14 +56,14 @@ TEST(GroupRates, ScalesShareTheStepAndFollowTheGradient) {
         if (k > 0) EXPECT_GT(rates.scaleOf(0), 10.0f * rates.scaleOf(k)) << k;
     }
     EXPECT_NEAR(weighted / total, 1.0, 1e-5);
-    EXPECT_LE(rates.scaleOf(0), rates.traceLimit());
+    EXPECT_LE(rates.scaleOf(0), rates.traceLimit(rep));
     EXPECT_NEAR(rates.logRates()[0], 2.0f, 1e-3f);  // 200 steps of the largest change, 0.01 each
     // Bad gradients change nothing; a rate never leaves +-6.
     const std::vector<float> before = rates.logRates();
     std::vector<float> bad(rates.lattices(), std::nanf(""));
-    rates.apply(bad.data());
+    rates.apply(rep, bad.data());
     EXPECT_EQ(rates.logRates(), before);
-    for (int step = 0; step < 2000; ++step) rates.apply(g.data());
+    for (int step = 0; step < 2000; ++step) rates.apply(rep, g.data());
     EXPECT_FLOAT_EQ(rates.logRates()[0], GroupRates::kLogLimit);
     EXPECT_FLOAT_EQ(rates.logRates()[1], -GroupRates::kLogLimit);
 }
