@@ -244,6 +244,12 @@ void TdLearner::restore(const std::vector<std::uint32_t>& features, const std::v
     }
 }
 
+void TdLearner::prefetchLiveRows() const noexcept {
+    // At most 64 lines: a crowd's agents have a few dozen live traces; more would crowd out the rest.
+    const std::uint32_t n = std::min<std::uint32_t>(liveCount_, 64);
+    for (std::uint32_t i = 0; i < n; ++i) prefetchLineForWrite(traces_.data() + std::size_t(live_[i]) * stride_);
+}
+
 void TdLearner::prefetch() const noexcept {
     prefetchBytes(live_.data(), std::size_t(liveCount_) * sizeof(std::uint32_t));
     prefetchData(traces_);

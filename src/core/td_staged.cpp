@@ -2,6 +2,10 @@
 // weights on several threads at once, each thread owning a part of the features (shared_step.cpp).
 #include <Eigen/Core>
 
+#if defined(__SSE__) || defined(_M_X64)
+#include <xmmintrin.h>
+#endif
+
 #include <algorithm>
 #include <limits>
 #include <type_traits>
@@ -115,9 +119,18 @@ struct ColumnBounds {
 
 // std::clamp's min(max(x, lo), hi), per lane: as clampedColumn, bit for bit.
 using Quad = Eigen::Array4f;
+// (Eigen's select became a max and a min per lane, stored to the stack and read back as one
+// vector: a stalled store forwarding on every row, most of a crowd's choice. SSE's maxps(lo, x) is
+// lo > x ? lo : x and minps(hi, r) is hi < r ? hi : r, the same operations.)
 VERVE_ALWAYS_INLINE Quad clampQuad(const Quad& x, const Quad& lo, const Quad& hi) {
+#if defined(__SSE__) || defined(_M_X64)
+    Quad out;
+    _mm_storeu_ps(out.data(), _mm_min_ps(_mm_loadu_ps(hi.data()), _mm_max_ps(_mm_loadu_ps(lo.data()), _mm_loadu_ps(x.data()))));
+    return out;
+#else
     const Quad raised = (x < lo).select(lo, x);
     return (hi < raised).select(hi, raised);
+#endif
 }
 VERVE_ALWAYS_INLINE float clampOne(float x, float lo, float hi) {
     const float raised = x < lo ? lo : x;
