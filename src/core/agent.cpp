@@ -203,10 +203,6 @@ void Agent::Impl::prefetch(unsigned stage) const noexcept {
         rep.prefetchLookup(0);
     } else {
         rep.prefetchLookup(stage - 2);
-        // The body's live trace rows, scattered over its traces: a shared brain's body reads them
-        // twice before it trains (its own step in the choice, then keeping them), the first read
-        // otherwise a miss each (one brain, 10,000 bodies: 6% more updates a second).
-        if (stage == 3) td.prefetchLiveRows();
     }
 }
 

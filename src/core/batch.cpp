@@ -276,6 +276,11 @@ void Batch::Impl::runPhaseItems(Phase p, std::uint32_t begin, std::uint32_t end,
             core::LookupScratch& mine = scratch[worker % scratch.size()];
             for (std::uint32_t k = begin; k < end; ++k) {
                 prefetchAhead(phased.data(), k, end);
+                // A body's live trace rows, scattered over its traces: it reads them in its choice
+                // (its own step) before it keeps them, the first read otherwise a miss each (one
+                // brain, 10,000 bodies: 6% more updates a second). Separate agents' training asks
+                // for its rows itself.
+                if (k + 2 < end) s.agents[phased[k + 2]]->impl_->td.prefetchLiveRows();
                 const std::uint32_t i = phased[k];
                 Agent::Impl& body = *s.agents[i]->impl_;
                 try {
