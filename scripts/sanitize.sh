@@ -9,4 +9,9 @@ cd "$(dirname "$0")/.."
 cmake --preset asan-ubsan >/dev/null
 cmake --build build/asan-ubsan -j"$(nproc)"
 echo "== C++, C ABI and Lua suites under ASan + UBSan (ctest)"
-ctest --test-dir build/asan-ubsan --output-on-failure -j"$(nproc)" -LE known_gap --timeout 1200
+# Two learning runs are left out here, 440 of the suites' ~1,140 s under the sanitizers: planning
+# on maze 2 with continuous sensors and the curious agents' grid. Their code (planning, the model,
+# curiosity, continuous sensors) runs under the sanitizers in their shorter siblings (maze 1, the
+# corridor, the bandit, the planning agent's tests); their bars gate in ./scripts/test.sh.
+slow='^(PlanningLearning\.ContinuousPlanningNoSlowerThanRlOnMaze2|CuriosityLearning\.CuriousAgentsFindTheLargeReward)$'
+ctest --test-dir build/asan-ubsan --output-on-failure -j"$(nproc)" -LE known_gap -E "$slow" --timeout 1200
