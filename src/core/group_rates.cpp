@@ -49,7 +49,7 @@ void GroupRates::scale(const StateRepresentation& rep, const std::vector<ActiveF
 }
 
 template <typename F>
-void GroupRates::sweep(const StateRepresentation& rep, const TdLearner& td, float delta, float* out, F&& f) const {
+void GroupRates::sweep(const StateRepresentation& rep, const TdLearner& td, float bounded, float* out, F&& f) const {
     std::fill(out, out + lattices(), 0.0f);
     const std::uint32_t* live = td.live();
     const float* traces = td.traces();
@@ -61,12 +61,11 @@ void GroupRates::sweep(const StateRepresentation& rep, const TdLearner& td, floa
         out[rep.latticeOf(feature)] += e * history_[feature];
         f(feature, e);
     }
-    const float d = std::clamp(delta, -kHistoryLimit, kHistoryLimit);
-    for (std::size_t k = 0; k < lattices(); ++k) out[k] *= d;
+    for (std::size_t k = 0; k < lattices(); ++k) out[k] *= bounded;
 }
 
 void GroupRates::gradient(const StateRepresentation& rep, const TdLearner& td, float delta, float* out) const {
-    sweep(rep, td, delta, out, [](std::uint32_t, float) {});
+    sweep(rep, td, boundedDelta(delta), out, [](std::uint32_t, float) {});
 }
 
 void GroupRates::apply(const StateRepresentation& rep, const float* gradient) {
@@ -98,7 +97,7 @@ void GroupRates::rememberOne(std::uint32_t feature, float e, float delta, float 
 
 void GroupRates::remember(const std::uint32_t* features, const float* rows, std::size_t count, std::uint32_t stride,
                           float delta, float eta) {
-    const float d = std::clamp(delta, -kHistoryLimit, kHistoryLimit);
+    const float d = boundedDelta(delta);
     for (std::size_t j = 0; j < count; ++j) {
         if (features[j] < history_.size()) rememberOne(features[j], rows[j * stride], d, eta);
     }
@@ -108,8 +107,8 @@ void GroupRates::learn(const StateRepresentation& rep, const TdLearner& td, floa
     if (!active_) return;
     // One pass: each live feature's part of the gradient reads its history before the step's change.
     std::array<float, DescriptorLimits::kMaxSensorGroups> g;
-    const float d = std::clamp(delta, -kHistoryLimit, kHistoryLimit);
-    sweep(rep, td, delta, g.data(), [&](std::uint32_t feature, float e) { rememberOne(feature, e, d, eta); });
+    const float d = boundedDelta(delta);
+    sweep(rep, td, d, g.data(), [&](std::uint32_t feature, float e) { rememberOne(feature, e, d, eta); });
     apply(rep, g.data());
 }
 

@@ -13,6 +13,7 @@
 // times its lattice's scale), so every learning kernel stays as it is and the actor's steps follow
 // the critic's. Agents of one lattice, or of a lattice and those beside it, are left alone.
 #pragma once
+#include <algorithm>
 #include <cstdint>
 #include <vector>
 
@@ -70,10 +71,12 @@ public:
 private:
     // Scales from the log rates, weighted by the lattices' expected activation sums.
     void rescale(const StateRepresentation& rep);
+    // A step's TD error within +-kHistoryLimit, as the gradient and the history take it.
+    static float boundedDelta(float delta) { return std::clamp(delta, -kHistoryLimit, kHistoryLimit); }
     // f(feature, e) for every live feature with a history (e its value trace), and the gradient
-    // of the step's TD error `delta` from them into `out`, one value per lattice.
+    // of the step's TD error (`bounded`: boundedDelta's) from them into `out`, one per lattice.
     template <typename F>
-    void sweep(const StateRepresentation& rep, const TdLearner& td, float delta, float* out, F&& f) const;
+    void sweep(const StateRepresentation& rep, const TdLearner& td, float bounded, float* out, F&& f) const;
     // h = h (1 - eta e)+ + eta delta e: the critic weight's recent change, decaying as IDBD's does.
     void rememberOne(std::uint32_t feature, float e, float delta, float eta);
 

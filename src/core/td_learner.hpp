@@ -169,6 +169,7 @@ public:
     std::uint32_t branchCount() const { return branchCount_; }  // 1: one action set
     const ActionBranches& branches() const { return branches_; }  // cold: read only with branches
     std::uint32_t liveCount() const { return liveCount_; }
+    // Asks for the live features' trace rows (a batch, a few bodies ahead of their use).
     void prefetchLiveRows() const noexcept;
     // The live features (liveCount() of them) and every feature's traces (traceStride() each);
     // after keepAndDecay, what it kept: keptCount() features and their traces as they were.

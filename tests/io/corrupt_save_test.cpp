@@ -4,9 +4,9 @@
 
 #include <cmath>
 #include <functional>
-#include <sstream>
 
 #include "io_test_support.hpp"
+#include "xml_edit.hpp"
 #include "verve/io.hpp"
 
 namespace verve {
@@ -20,24 +20,11 @@ protected:
     }
 
     // Edits the good save through pugixml and returns the result.
-    std::string edited(const std::function<void(pugi::xml_node)>& edit) const {
-        pugi::xml_document doc;
-        EXPECT_TRUE(doc.load_string(xml_.c_str()));
-        edit(doc.document_element());
-        std::ostringstream out;
-        doc.save(out);
-        return out.str();
-    }
+    std::string edited(const std::function<void(pugi::xml_node)>& edit) const { return iotest::editedXml(xml_, edit); }
 
     // Loading must throw `code` with a message containing `needle`.
     static void expectRefused(const std::string& data, ErrorCode code, const std::string& needle) {
-        try {
-            loadAgentFromMemory(data.data(), data.size());
-            ADD_FAILURE() << "loaded a bad save; expected an error containing '" << needle << "'";
-        } catch (const Error& e) {
-            EXPECT_EQ(e.code(), code) << e.what();
-            EXPECT_NE(std::string(e.what()).find(needle), std::string::npos) << e.what();
-        }
+        iotest::expectLoadRefused(data, code, needle);
     }
 
     // Replaces the first token of an element's number list.

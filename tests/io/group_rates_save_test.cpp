@@ -4,10 +4,8 @@
 #include <gtest/gtest.h>
 #include <pugixml.hpp>
 
-#include <functional>
-#include <sstream>
-
 #include "io_test_support.hpp"
+#include "xml_edit.hpp"
 #include "verve/io.hpp"
 
 namespace verve {
@@ -15,23 +13,10 @@ namespace {
 
 Agent groupedAgent() { return iotest::trainedAgent(iotest::groupedDescriptor(), 410); }
 
-std::string edited(const std::string& xml, const std::function<void(pugi::xml_node)>& edit) {
-    pugi::xml_document doc;
-    EXPECT_TRUE(doc.load_string(xml.c_str()));
-    edit(doc.document_element());
-    std::ostringstream out;
-    doc.save(out);
-    return out.str();
-}
+using iotest::editedXml;
 
 void expectRefused(const std::string& data, const std::string& needle) {
-    try {
-        loadAgentFromMemory(data.data(), data.size());
-        ADD_FAILURE() << "loaded a bad save; expected an error containing '" << needle << "'";
-    } catch (const Error& e) {
-        EXPECT_EQ(e.code(), ErrorCode::Format) << e.what();
-        EXPECT_NE(std::string(e.what()).find(needle), std::string::npos) << e.what() << " (expected '" << needle << "')";
-    }
+    iotest::expectLoadRefused(data, ErrorCode::Format, needle);
 }
 
 TEST(GroupRatesSave, BothFormatsKeepTheRatesAndTheFuture) {
@@ -54,7 +39,7 @@ TEST(GroupRatesSave, BothFormatsKeepTheRatesAndTheFuture) {
 TEST(GroupRatesSave, WithoutThemTheRatesStartAfreshAndWithoutTheBitThereAreNone) {
     Agent agent = groupedAgent();
     const std::string xml = saveAgentToString(agent);
-    const std::string bare = edited(xml, [](pugi::xml_node r) { r.remove_child("group_rates"); });
+    const std::string bare = editedXml(xml, [](pugi::xml_node r) { r.remove_child("group_rates"); });
     const AgentSnapshot fresh = loadAgentFromMemory(bare.data(), bare.size()).snapshot();
     EXPECT_EQ(fresh.groupLogRates, std::vector<float>(11, 0.0f));
     EXPECT_EQ(fresh.groupHistory, std::vector<float>(fresh.featureKeys.size(), 0.0f));
@@ -65,7 +50,7 @@ TEST(GroupRatesSave, WithoutThemTheRatesStartAfreshAndWithoutTheBitThereAreNone)
     EXPECT_EQ(older.find("group_rates"), std::string::npos);
     EXPECT_TRUE(loadAgentFromMemory(older.data(), older.size()).snapshot().groupLogRates.empty());
     // ... and such an agent refuses rates put into its save, even of the right sizes.
-    const std::string grafted = edited(older, [](pugi::xml_node r) {
+    const std::string grafted = editedXml(older, [](pugi::xml_node r) {
         const std::string features = r.child("features").attribute("count").value();
         std::string zeros;
         for (int i = 0; i < std::stoi(features); ++i) zeros += "0 ";
@@ -80,14 +65,14 @@ TEST(GroupRatesSave, WithoutThemTheRatesStartAfreshAndWithoutTheBitThereAreNone)
 TEST(GroupRatesSave, BadValuesAndSizesAreRefused) {
     const std::string xml = saveAgentToString(groupedAgent());
     const auto withList = [&](const char* list, const char* text) {
-        return edited(xml, [&](pugi::xml_node r) { r.child("group_rates").child(list).text().set(text); });
+        return editedXml(xml, [&](pugi::xml_node r) { r.child("group_rates").child(list).text().set(text); });
     };
     expectRefused(withList("log_rates", "7 0 0 0 0 0 0 0 0 0 0"), "log rate lies beyond +-6");
     expectRefused(withList("log_rates", "0 0 0"), "groupNorms holds 11 values, expected 3");
     expectRefused(withList("norms", "-1 0 0 0 0 0 0 0 0 0 0"), "norm is negative");
     expectRefused(withList("norms", "nan 0 0 0 0 0 0 0 0 0 0"), "groupNorms");
     expectRefused(withList("history", "0 0"), "groupHistory holds 2 values");
-    const std::string huge = edited(xml, [](pugi::xml_node r) {
+    const std::string huge = editedXml(xml, [](pugi::xml_node r) {
         pugi::xml_node h = r.child("group_rates").child("history");
         std::string text = h.text().get();
         const auto start = text.find_first_not_of(" \n");

@@ -4,12 +4,12 @@
 #include <cstdio>
 #include <filesystem>
 #include <initializer_list>
-#include <sstream>
 #include <string>
 
 #include <pugixml.hpp>
 
 #include "io_test_support.hpp"
+#include "xml_edit.hpp"
 #include "verve/io.hpp"
 
 namespace verve {
@@ -21,13 +21,10 @@ using iotest::trainedAgent;
 
 // The XML save with these attributes of <state> removed: how a save from before them reads.
 std::string withoutStateAttributes(const std::string& xml, std::initializer_list<const char*> names) {
-    pugi::xml_document doc;
-    EXPECT_TRUE(doc.load_string(xml.c_str()));
-    pugi::xml_node state = doc.document_element().child("state");
-    for (const char* name : names) EXPECT_TRUE(state.remove_attribute(name)) << name;
-    std::ostringstream old;
-    doc.save(old);
-    return old.str();
+    return iotest::editedXml(xml, [&](pugi::xml_node root) {
+        pugi::xml_node state = root.child("state");
+        for (const char* name : names) EXPECT_TRUE(state.remove_attribute(name)) << name;
+    });
 }
 
 TEST(RoundTrip, MixedSensorsMidTrialFromMemory) {
