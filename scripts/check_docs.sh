@@ -74,6 +74,7 @@ doc docs/lua.md 'mkdir -p build/love-rays'
 doc docs/lua.md 'cp build/stage/lib/lua/5.1/verve.so build/stage/lib/libverve.so.0 build/love-rays/'
 doc docs/lua.md '(cd samples/love_rays && cmake -E tar cf ../../build/love-rays/verve-rays.love --format=zip *.lua)'
 doc docs/lua.md 'love build/love-rays/verve-rays.love --headless --minutes 20 --seed 1'
+doc docs/lua.md 'love build/love-rays/verve-rays.love --headless --minutes 20 --seed 1 --progress 2'
 if command -v xvfb-run >/dev/null; then
   doc docs/lua.md 'xvfb-run -a love build/love-npcs/verve-npcs.love --minutes 20 --fresh --screenshot npcs.png'
 fi
@@ -88,6 +89,8 @@ doc docs/scenes.md 'build/samples/runner/verve-demo compare-brains --seeds 5 --o
   'build/samples/runner/verve-demo compare-brains --seeds 1 --minutes 1 --out out'
 doc docs/scenes.md 'build/samples/runner/verve-demo ray-npc --seeds 1-5 --minutes 20 --out out' \
   'build/samples/runner/verve-demo ray-npc --seeds 1 --minutes 1 --out out'
+doc docs/scenes.md 'build/samples/runner/verve-demo ray-npc --seeds 1-5 --minutes 20 --progress-reward 2 --out out' \
+  'build/samples/runner/verve-demo ray-npc --seeds 1 --minutes 1 --progress-reward 2 --out out'
 doc docs/crowds.md 'build/samples/runner/verve-demo compare-brains --seeds 5 --minutes 10 --out out' \
   'build/samples/runner/verve-demo compare-brains --seeds 1 --minutes 1 --out out'
 

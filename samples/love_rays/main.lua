@@ -6,11 +6,14 @@
 -- its target, its speed and turn rate, and whether the hazard is ahead or underfoot (world.lua).
 -- It acts on two branches at once: turn {left, none, right} x move {stop, forward}.
 --
---   love verve-rays.love [--headless] [--minutes N] [--seed N] [--driver D] [--screenshot FILE]
+--   love verve-rays.love [--headless] [--minutes N] [--seed N] [--driver D] [--progress K]
+--                        [--screenshot FILE]
 -- --minutes N    run N simulated minutes flat out, then the scripted steering and a random policy
 --                for N minutes in the same arena, print each minute's measures and a summary, quit
 -- --seed N       decides the arena, starts, targets and each agent's random stream (default 1)
 -- --driver D     in the window: agents (default), script or random
+-- --progress K   also reward K per metre an NPC closes on its target (default 0: arrival only;
+--                with 2 the agents learn to fetch, docs/lua.md)
 -- --screenshot F at the end of --minutes, save the window as F in the save directory
 -- Keys: Space fast-forwards (x20), R shows or hides the rays, Esc quits.
 
@@ -42,7 +45,7 @@ local function new_world(driver)
   random_rng = love.math.newRandomGenerator(options.seed + 7)
   return world.new(options.seed, drivers[driver], driver == "agents" and function(i)
     return verve.agent(world.descriptor(options.seed * 1000 + i))
-  end or nil)
+  end or nil, options.progress)
 end
 
 local function run(w, minutes)
@@ -57,14 +60,16 @@ function love.load(args)
     if a == "--minutes" and tonumber(value) then options.minutes, i = math.floor(tonumber(value)), i + 1
     elseif a == "--seed" and tonumber(value) then options.seed, i = math.floor(tonumber(value)), i + 1
     elseif a == "--driver" and drivers[value] then options.driver, i = value, i + 1
+    elseif a == "--progress" and tonumber(value) and tonumber(value) >= 0 then
+      options.progress, i = tonumber(value), i + 1
     elseif a == "--screenshot" and value then options.screenshot, i = value, i + 1
     elseif a ~= "--headless" then error("unknown argument " .. a .. " (see the top of main.lua)") end
     i = i + 1
   end
   if not love.graphics and not options.minutes then error("--headless needs --minutes N") end
   current = new_world(options.driver)
-  print(("verve %s on %s: %d NPCs driven by %s, seed %d"):format(verve.version(), jit and jit.version or _VERSION,
-    world.NPCS, options.driver, options.seed))
+  print(("verve %s on %s: %d NPCs driven by %s, seed %d, progress reward %g per metre"):format(verve.version(),
+    jit and jit.version or _VERSION, world.NPCS, options.driver, options.seed, options.progress or 0))
 end
 
 -- The end of a --minutes run: the baselines in the same arena, the report, then quit.

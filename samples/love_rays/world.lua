@@ -30,9 +30,12 @@ end
 
 -- `driver(world, i, npc)` returns the turn and move choices; `new_agent(i)`, if given, makes NPC
 -- i's agent (the world closes them). The seed decides the arena, the starts and the targets.
-function world.new(seed, driver, new_agent)
+-- `progress` (default 0): reward per metre an NPC closes on its target in a step, negative when it
+-- walks away; its sum over any walk depends only on where the walk began and ended, so circling
+-- earns nothing. What a designer adds when arrival alone is too rare to learn from (docs/lua.md).
+function world.new(seed, driver, new_agent, progress)
   local self = setmetatable({ rng = love.math.newRandomGenerator(seed), driver = driver, npcs = {},
-                              history = {}, steps = 0 }, world)
+                              history = {}, steps = 0, progress = progress or 0 }, world)
   self.arena = arena.new(self.rng)
   self.diagonal = 2 * math.sqrt(2) * self.arena.half
   for i = 1, world.NPCS do
@@ -42,6 +45,7 @@ function world.new(seed, driver, new_agent)
                   obs = { discrete = { 1 }, continuous = {} } }
     npc.agent = new_agent and new_agent(i)
     npc.tx, npc.ty = self.arena:free_spot(self.rng, 0.5, 0.3, x, y, 2)
+    npc.distance = math.sqrt((npc.tx - x) ^ 2 + (npc.ty - y) ^ 2)
     self.npcs[i] = npc
   end
   self:clear_minute()
@@ -88,11 +92,14 @@ function world:step()
                                     world.RADIUS)
       touched = touched or t
     end
-    local r = 0
-    if (npc.tx - npc.x) ^ 2 + (npc.ty - npc.y) ^ 2 < world.REACH ^ 2 then
+    local distance = math.sqrt((npc.tx - npc.x) ^ 2 + (npc.ty - npc.y) ^ 2)
+    local r = self.progress * (npc.distance - distance)
+    if distance < world.REACH then
       npc.tx, npc.ty = ar:free_spot(self.rng, 0.5, 0.3, npc.x, npc.y, 2) -- a new one, a walk away
       m.targets, r = m.targets + 1, r + 1
+      distance = math.sqrt((npc.tx - npc.x) ^ 2 + (npc.ty - npc.y) ^ 2) -- the new one counts from here
     end
+    npc.distance = distance
     if ar:in_hazard(npc.x, npc.y) then m.hazard, r = m.hazard + world.STEP, r - 1 end
     if touched then m.wall, r = m.wall + world.STEP, r - WALL_PENALTY end
     npc.reward = math.max(-1, math.min(1, r)) -- the agent gets it with its next decision

@@ -231,6 +231,9 @@ int main(int argc, char** argv) {
     rays->add_option("--rays", rayNpcs.rays, "rays per NPC (8-16; sensors beyond 16 need a library that takes them)")
         ->check(CLI::Range(8u, 16u));
     rays->add_flag("--shared-brain", rayNpcs.sharedBrain, "all NPCs are bodies of one shared brain");
+    rays->add_option("--progress-reward", rayNpcs.progressReward,
+                     "reward per metre an NPC closes on its target (0: arrival only; docs/scenes.md)")
+        ->check(CLI::Range(0.0f, 100.0f));
     rays->add_option("--out", rayNpcs.out, "output directory");
     run->add_flag("--defaults", agent.libraryDefaults,
                   "every learning setting at the library's default: only the scene's sensors, actions and features");

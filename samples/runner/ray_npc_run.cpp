@@ -28,6 +28,7 @@ std::vector<RayNpcStats> runMinutes(const RayNpcComparison& c, std::uint64_t see
     config.npcs = c.npcs;
     config.rays = c.rays;
     config.sharedBrain = c.sharedBrain;
+    config.progressReward = c.progressReward;
     // Library defaults: the scene's sensors and actions, nothing tuned (RayNpcScene::defaultDescriptor).
     RayNpcScene scene(config, seed);
     scene.setDriver(driver);
@@ -116,7 +117,9 @@ int compareRayNpcs(const RayNpcComparison& c) {
     if (!runs) throw std::runtime_error("cannot write " + base + "-runs.csv");
 
     std::printf("\nper simulated minute, mean of %zu seeds (reward per NPC-minute: +1 a target, -1 a step in the "
-                "hazard, -0.1 a step touching a wall or box)\n", c.seeds.size());
+                "hazard, -0.1 a step touching a wall or box", c.seeds.size());
+    if (c.progressReward > 0) std::printf(", %g per metre closed on the target", static_cast<double>(c.progressReward));
+    std::printf(")\n");
     std::printf("minute | agents: targets hazard%% collisions reward | script: targets hazard%% collisions reward\n");
     std::ofstream curve(base + "-curve.csv"), reward(base + "-reward.csv");
     curve << "minute,agents_targets,script_targets,agents_hazard_percent,script_hazard_percent,"
@@ -142,10 +145,14 @@ int compareRayNpcs(const RayNpcComparison& c) {
         std::size_t beat = 0;
         for (std::size_t m = 0; m < c.minutes && beat == 0; ++m)
             if (agents[s][m].rewardPerNpcMinute() > scriptMean) beat = m + 1;
-        std::printf("  seed %llu: script %.2f, agents %.2f (minute 1) -> %.2f (minute %u); %s\n",
+        double scriptTargets = 0;
+        for (const RayNpcStats& st : script[s]) scriptTargets += st.targetsPerNpcMinute() / c.minutes;
+        std::printf("  seed %llu: script %.2f, agents %.2f (minute 1) -> %.2f (minute %u); %s; targets: script %.2f, "
+                    "agents %.2f in minute %u\n",
                     static_cast<unsigned long long>(c.seeds[s]), scriptMean, agents[s].front().rewardPerNpcMinute(),
                     agents[s].back().rewardPerNpcMinute(), c.minutes,
-                    beat > 0 ? ("beaten in minute " + std::to_string(beat)).c_str() : "not beaten");
+                    beat > 0 ? ("beaten in minute " + std::to_string(beat)).c_str() : "not beaten", scriptTargets,
+                    agents[s].back().targetsPerNpcMinute(), c.minutes);
     }
     std::printf("  runs:   %s-runs.csv\n  curve:  %s-curve.csv\n", base.c_str(), base.c_str());
     if (plotColumns(base + "-reward.csv", base + "-reward.png",

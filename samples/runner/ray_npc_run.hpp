@@ -13,6 +13,7 @@ struct RayNpcComparison {
     std::uint32_t npcs = 4;
     std::uint32_t rays = 8;
     bool sharedBrain = false;
+    float progressReward = 0.0f;  // per metre closed on the target (scenes::RayNpcConfig)
     std::string out = "demo-out";
 };
 

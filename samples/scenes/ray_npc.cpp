@@ -44,6 +44,7 @@ struct RayFromNpc : btCollisionWorld::ClosestRayResultCallback {
 };
 
 btVector3 floorPoint(Vec2 p, btScalar y) { return {static_cast<btScalar>(p.x), y, static_cast<btScalar>(p.z)}; }
+double distance(Vec2 a, Vec2 b) { return std::hypot(a.x - b.x, a.z - b.z); }
 }  // namespace
 
 RayNpcScene::RayNpcScene(const RayNpcConfig& config, std::uint64_t seed)
@@ -52,9 +53,10 @@ RayNpcScene::RayNpcScene(const RayNpcConfig& config, std::uint64_t seed)
 RayNpcScene::RayNpcScene(const RayNpcConfig& config, std::uint64_t seed, const AgentDescriptor& agents)
     : config_(config), random_(seed) {
     if (config.npcs == 0 || config.rays < 8 || config.rays > 16 || config.rayRange <= 0 || config.rayArc <= 0 ||
-        config.rayArc > 2 * kPi)
+        config.rayArc > 2 * kPi || !(config.progressReward >= 0 && std::isfinite(config.progressReward)))
         throw Error(ErrorCode::InvalidArgument,
-                    "ray npc: needs at least one NPC, 8 to 16 rays, a positive range and an arc up to 360 degrees");
+                    "ray npc: needs at least one NPC, 8 to 16 rays, a positive range, an arc up to 360 degrees and "
+                    "a finite progress reward of 0 or more");
     agents.validate();
     if (agents.discreteSensors != std::vector<std::uint32_t>{3} ||
         agents.continuousSensors.size() != continuousSensors(config) || agents.numActions != kActions)
@@ -82,7 +84,10 @@ RayNpcScene::RayNpcScene(const RayNpcConfig& config, std::uint64_t seed, const A
         d.seed = static_cast<std::uint64_t>(random_.uniform(0, 0x1.0p53));
         addNpcAgent(agents_, brain, d, config.sharedBrain);
     }
-    for (std::uint32_t i = 0; i < config.npcs; ++i) targets_.push_back(newTarget(i));
+    for (std::uint32_t i = 0; i < config.npcs; ++i) {
+        targets_.push_back(newTarget(i));
+        targetDistance_.push_back(distance(position(i), targets_.back()));
+    }
     rewards_.assign(config.npcs, 0.0f);
     actions_.assign(config.npcs, Forward);
     touching_.assign(config.npcs, false);
@@ -242,12 +247,14 @@ void RayNpcScene::simulate() {
 void RayNpcScene::reward() {
     for (std::size_t i = 0; i < bodies_.size(); ++i) {
         const Vec2 p = position(i);
-        double r = 0.0;
-        if (std::hypot(targets_[i].x - p.x, targets_[i].z - p.z) < config_.reachRadius) {
+        const double toTarget = distance(p, targets_[i]);
+        double r = config_.progressReward * (targetDistance_[i] - toTarget);
+        if (toTarget < config_.reachRadius) {
             targets_[i] = newTarget(i);
             ++totals_.targets;
             r += 1.0;
         }
+        targetDistance_[i] = distance(p, targets_[i]);  // a new target starts from here
         if (layout_->inHazard(p)) {
             totals_.hazardSeconds += config_.agentStep;
             r -= 1.0;

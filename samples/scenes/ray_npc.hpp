@@ -14,7 +14,8 @@
 //   continuous N+2:    forward speed (/ speed)
 //   continuous N+3:    turn rate (/ turnRate, positive turning left)
 // Rewards: +1 on reaching the target (a new one appears elsewhere), -1 per agent step inside the
-// hazard, -collisionPenalty per agent step touching a wall or an obstacle; summed, within [-1, 1].
+// hazard, -collisionPenalty per agent step touching a wall or an obstacle, progressReward per metre
+// closed on the target (0 by default); summed, within [-1, 1].
 #pragma once
 #include <cstdint>
 #include <memory>
@@ -46,6 +47,13 @@ struct RayNpcConfig {
     // Scraping along a wall costs time but nothing else; a small price makes the agent learn what
     // a player would call clumsy, without drowning the +1 of a target (10 s of contact = 1 target).
     float collisionPenalty = 0.1f;
+    // Reward per metre the NPC closed on its target during the step (negative when it walked away):
+    // what a designer adds when arrival alone is too rare to learn from. It is shaping by a
+    // potential (minus the distance): its sum over a walk depends only on where the walk began and
+    // ended, so circling earns nothing and the best way to the target stays the best (Ng, Harada
+    // and Russell 1999).
+    // 0 by default: the scene as first measured, arrival only (docs/scenes.md, "ray-npc").
+    float progressReward = 0.0f;
     float physicsStep = 0.01f;       // s
     float agentStep = 0.1f;          // s
     bool sharedBrain = false;        // every NPC a body of one brain (verve/brain.hpp), not its own agent
@@ -129,6 +137,7 @@ private:
     std::vector<std::uint32_t> actions_;
     std::vector<bool> touchedThisStep_; // in contact with a wall or obstacle during the agent step
     std::vector<bool> touching_;        // ... during the previous one
+    std::vector<double> targetDistance_; // from each NPC to its target after the previous step
     Observation scratch_;
     double time_ = 0.0;
     RayNpcStats totals_;
