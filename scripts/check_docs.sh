@@ -154,6 +154,8 @@ doc docs/godot.md 'godot3-server --path build/godot/sample --fixed-fps 60 --verv
   'godot3-server --path build/godot/sample --fixed-fps 60 --verve-test --verve-seeds=1'
 doc docs/godot.md 'godot3-server --path build/godot/sample --fixed-fps 60 res://rays.tscn --verve-test' \
   'godot3-server --path build/godot/sample --fixed-fps 60 res://rays.tscn --verve-test --verve-seeds=1'
+doc docs/godot.md 'godot3-server --path build/godot/sample --fixed-fps 60 res://rays.tscn --verve-test --verve-progress=2' \
+  'godot3-server --path build/godot/sample --fixed-fps 60 res://rays.tscn --verve-test --verve-seeds=1 --verve-progress=2'
 in_doc docs/godot.md 'godot3 --path build/godot/sample res://rays.tscn'
 if command -v xvfb-run >/dev/null && command -v godot3 >/dev/null; then
   doc docs/godot.md 'xvfb-run -a -s "-screen 0 1024x768x24" godot3 --path build/godot/sample --fixed-fps 60 --verve-screenshot="$PWD/docs/img/godot-arena.png"' \

@@ -9,6 +9,9 @@
 #                 headless: per seed, the agents 15 simulated minutes, then the scripted steering
 #                 (ray_steering.gd) 3 minutes in the same world; prints per-minute measures and
 #                 checks the agents' reward (rays_test.gd). --verve-seeds=4,5 picks other worlds.
+#   --verve-progress=2  also rewards 2 per metre an NPC closes on its target in a step (negative
+#                 when it walks away; 0 by default): with it the agents learn to fetch, and the
+#                 test checks their targets against the script's (docs/godot.md).
 extends Node2D
 
 const VerveAgent = preload("res://addons/verve/verve_agent.gdns")
@@ -42,6 +45,8 @@ var targets = []    # one position per NPC
 var choices = []    # per NPC: [turn, move]
 var speeds = []     # per NPC: forward speed / SPEED in the last physics tick
 var rewards = []    # what each NPC's previous decision earned
+var distances = []  # per NPC: metres to its target after the previous decision
+var progress = 0.0  # reward per metre closed on the target (--verve-progress=)
 var ray_view = []  # the yellow NPC's last ray readings, drawn
 var rng = RandomNumberGenerator.new()
 var ticks = 0
@@ -55,6 +60,8 @@ func _ready():
 	for arg in OS.get_cmdline_args():
 		if arg.begins_with("--verve-seeds="):
 			test_seeds = Array(arg.split("=")[1].split_floats(","))
+		if arg.begins_with("--verve-progress="):
+			progress = max(0.0, float(arg.split("=")[1]))
 	add_box(Rect2(-HALF_SIZE - 20, -HALF_SIZE - 20, 2 * HALF_SIZE + 40, 20))   # the four walls
 	add_box(Rect2(-HALF_SIZE - 20, HALF_SIZE, 2 * HALF_SIZE + 40, 20))
 	add_box(Rect2(-HALF_SIZE - 20, -HALF_SIZE, 20, 2 * HALF_SIZE))
@@ -89,6 +96,7 @@ func start_world(world, learning):
 	choices.clear()
 	speeds.clear()
 	rewards.clear()
+	distances.clear()
 	rng.seed = world
 	ticks = 0
 	measures = RayMinutes.new(NPCS, int(60 / DT))
@@ -105,6 +113,7 @@ func start_world(world, learning):
 		add_child(npc)
 		npcs.append(npc)
 		targets.append(free_spot(npc.position))
+		distances.append(npc.position.distance_to(targets[i]) / M)
 		choices.append([1, 0])
 		speeds.append(0.0)
 		rewards.append(0.0)
@@ -160,14 +169,18 @@ func decide():
 	var space = get_world_2d().direct_space_state
 	for i in NPCS:
 		var npc = npcs[i]
-		var fetched = npc.position.distance_to(targets[i]) < REACH
+		var distance = npc.position.distance_to(targets[i]) / M
+		var fetched = distance * M < REACH
 		var wall = touching_wall(npc)
 		var hazard = HAZARD.has_point(npc.position)
 		if ticks > 0:
-			rewards[i] = clamp(int(fetched) - int(hazard) - 0.1 * int(wall), -1.0, 1.0)
+			# Progress: its sum over any walk depends only on the walk's ends, so circling earns nothing.
+			var closed = progress * (distances[i] - distance)
+			rewards[i] = clamp(closed + int(fetched) - int(hazard) - 0.1 * int(wall), -1.0, 1.0)
 			measures.add(int((ticks - 1) / 3600), fetched, wall, hazard, rewards[i])
 		if fetched:
 			targets[i] = free_spot(npc.position)
+		distances[i] = npc.position.distance_to(targets[i]) / M   # a new target counts from here
 		var sensed = sensors.read(space, npc, targets[i], HAZARD, speeds[i], 1 - choices[i][0])
 		if i == 0:
 			ray_view = sensed[1].slice(0, RaySensors.RAYS - 1)
