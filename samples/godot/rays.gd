@@ -170,7 +170,7 @@ func decide():
 	for i in NPCS:
 		var npc = npcs[i]
 		var distance = npc.position.distance_to(targets[i]) / M
-		var fetched = distance * M < REACH
+		var fetched = distance < REACH / M
 		var wall = touching_wall(npc)
 		var hazard = HAZARD.has_point(npc.position)
 		if ticks > 0:
@@ -178,9 +178,10 @@ func decide():
 			var closed = progress * (distances[i] - distance)
 			rewards[i] = clamp(closed + int(fetched) - int(hazard) - 0.1 * int(wall), -1.0, 1.0)
 			measures.add(int((ticks - 1) / 3600), fetched, wall, hazard, rewards[i])
+		distances[i] = distance
 		if fetched:
 			targets[i] = free_spot(npc.position)
-		distances[i] = npc.position.distance_to(targets[i]) / M   # a new target counts from here
+			distances[i] = npc.position.distance_to(targets[i]) / M   # a new target counts from here
 		var sensed = sensors.read(space, npc, targets[i], HAZARD, speeds[i], 1 - choices[i][0])
 		if i == 0:
 			ray_view = sensed[1].slice(0, RaySensors.RAYS - 1)

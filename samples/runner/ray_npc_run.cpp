@@ -140,13 +140,14 @@ int compareRayNpcs(const RayNpcComparison& c) {
     // The bar the learning test states: a minute in which the agents out-earn the script's mean.
     std::printf("\nper seed: reward per NPC-minute, the script's mean, and the first minute the agents beat it\n");
     for (std::size_t s = 0; s < c.seeds.size(); ++s) {
-        double scriptMean = 0;
-        for (const RayNpcStats& st : script[s]) scriptMean += st.rewardPerNpcMinute() / c.minutes;
+        double scriptMean = 0, scriptTargets = 0;
+        for (const RayNpcStats& st : script[s]) {
+            scriptMean += st.rewardPerNpcMinute() / c.minutes;
+            scriptTargets += st.targetsPerNpcMinute() / c.minutes;
+        }
         std::size_t beat = 0;
         for (std::size_t m = 0; m < c.minutes && beat == 0; ++m)
             if (agents[s][m].rewardPerNpcMinute() > scriptMean) beat = m + 1;
-        double scriptTargets = 0;
-        for (const RayNpcStats& st : script[s]) scriptTargets += st.targetsPerNpcMinute() / c.minutes;
         std::printf("  seed %llu: script %.2f, agents %.2f (minute 1) -> %.2f (minute %u); %s; targets: script %.2f, "
                     "agents %.2f in minute %u\n",
                     static_cast<unsigned long long>(c.seeds[s]), scriptMean, agents[s].front().rewardPerNpcMinute(),

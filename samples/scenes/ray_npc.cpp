@@ -44,7 +44,6 @@ struct RayFromNpc : btCollisionWorld::ClosestRayResultCallback {
 };
 
 btVector3 floorPoint(Vec2 p, btScalar y) { return {static_cast<btScalar>(p.x), y, static_cast<btScalar>(p.z)}; }
-double distance(Vec2 a, Vec2 b) { return std::hypot(a.x - b.x, a.z - b.z); }
 }  // namespace
 
 RayNpcScene::RayNpcScene(const RayNpcConfig& config, std::uint64_t seed)
@@ -249,12 +248,13 @@ void RayNpcScene::reward() {
         const Vec2 p = position(i);
         const double toTarget = distance(p, targets_[i]);
         double r = config_.progressReward * (targetDistance_[i] - toTarget);
+        targetDistance_[i] = toTarget;
         if (toTarget < config_.reachRadius) {
             targets_[i] = newTarget(i);
+            targetDistance_[i] = distance(p, targets_[i]);  // a new target counts from here
             ++totals_.targets;
             r += 1.0;
         }
-        targetDistance_[i] = distance(p, targets_[i]);  // a new target starts from here
         if (layout_->inHazard(p)) {
             totals_.hazardSeconds += config_.agentStep;
             r -= 1.0;

@@ -52,7 +52,7 @@ RayNpcLayout::RayNpcLayout(const RayNpcLayoutConfig& config, SceneRandom& random
 }
 
 bool RayNpcLayout::inHazard(Vec2 p) const {
-    return std::hypot(p.x - hazard_.x, p.z - hazard_.z) < config_.hazardRadius;
+    return distance(p, hazard_) < config_.hazardRadius;
 }
 
 double RayNpcLayout::clearance(Vec2 p) const {
@@ -68,9 +68,9 @@ Vec2 RayNpcLayout::freeSpot(SceneRandom& random, double clear, double hazardGap,
     for (int t = 0; t < kTries; ++t) {
         const Vec2 p{random.uniform(-edge, edge), random.uniform(-edge, edge)};
         if (clearance(p) < clear) continue;
-        if (std::hypot(p.x - hazard_.x, p.z - hazard_.z) < config_.hazardRadius + hazardGap) continue;
+        if (distance(p, hazard_) < config_.hazardRadius + hazardGap) continue;
         if (std::any_of(others.begin(), others.end(),
-                        [&](Vec2 o) { return std::hypot(o.x - p.x, o.z - p.z) < apart; }))
+                        [&](Vec2 o) { return distance(o, p) < apart; }))
             continue;
         return p;
     }

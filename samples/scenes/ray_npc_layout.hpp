@@ -3,6 +3,7 @@
 // (is a spot free for an NPC or a target item). Plain 2D geometry on the floor plane (x, z): the
 // Bullet world is built from it, and nothing here needs Bullet.
 #pragma once
+#include <cmath>
 #include <cstdint>
 #include <vector>
 
@@ -13,6 +14,8 @@ namespace verve::scenes {
 struct Vec2 {
     double x = 0, z = 0;
 };
+
+inline double distance(Vec2 a, Vec2 b) { return std::hypot(a.x - b.x, a.z - b.z); }
 
 struct Box2 {
     Vec2 centre;

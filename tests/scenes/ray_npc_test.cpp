@@ -146,17 +146,13 @@ TEST(RayNpc, ProgressRewardPaysTheMetresClosedOnTheTarget) {
     RayNpcScene a(plain, 4), b(shaped, 4);
     a.setDriver(RayNpcScene::Driver::Script);
     b.setDriver(RayNpcScene::Driver::Script);
-    const auto toTarget = [](const RayNpcScene& s) {
-        return std::hypot(s.target(0).x - s.position(0).x, s.target(0).z - s.position(0).z);
-    };
     int checked = 0, reached = 0;
     for (int step = 0; step < 600; ++step) {
-        const double before = toTarget(b);
-        const Vec2 target = b.target(0);
+        const Vec2 target = b.target(0);  // the one the step pays for, even if it is reached
+        const double before = distance(b.position(0), target);
         const RayNpcStats sa = a.run(plain.agentStep), sb = b.run(shaped.agentStep);
         ASSERT_EQ(sa.targets, sb.targets);
-        const double closed = sb.targets > 0 ? before - std::hypot(target.x - b.position(0).x, target.z - b.position(0).z)
-                                             : before - toTarget(b);
+        const double closed = before - distance(b.position(0), target);
         if (sb.targets > 0) ++reached;
         if (std::abs(sb.reward) >= 1.0) continue;  // clamped to [-1, 1]
         EXPECT_NEAR(sb.reward - sa.reward, 2.0 * closed, 1e-5) << "step " << step;
